@@ -1,0 +1,225 @@
+// `adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]
+//            [--checker adsd|fcl] [--motion discrete|certified] [--path OUT.path]`
+//
+// Solves a problem file (the default problem without one), simplifies the path, prints a summary
+// and writes the path in OMPL.app's .path format. Exit status: 0 solved, 1 not solved within the
+// time, 2 bad input (one line naming the file, line and key).
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ompl/util/Console.h>
+#include <ompl/util/Time.h>
+
+#include "adsd/error.h"
+#include "adsd/planner/path_report.h"
+#include "adsd/planner/planner_registry.h"
+#include "adsd/planner/planning_problem.h"
+#include "adsd/planner/problem_file.h"
+#include "adsd/planner/shipped_problems.h"
+
+namespace adsd::app {
+
+namespace {
+
+using namespace adsd::planner;
+
+struct PlanArguments {
+  std::string problem;
+  std::optional<std::string> planner;
+  std::optional<double> seconds;
+  std::optional<ObjectiveKind> objective;
+  CheckerKind checker = CheckerKind::adsd;
+  MotionKind motion = MotionKind::discrete;
+  std::optional<std::string> pathFile;
+};
+
+const char* kUsage =
+    "usage: adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]\n"
+    "                 [--checker adsd|fcl] [--motion discrete|certified] [--path OUT.path]\n";
+
+PlanArguments parseArguments(const std::vector<std::string>& args) {
+  PlanArguments a;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw InputError("adsd plan: " + arg + " needs a value");
+      return args[++i];
+    };
+    if (arg == "--planner") {
+      a.planner = value();
+    } else if (arg == "--time") {
+      const std::string& v = value();
+      char* end = nullptr;
+      const double s = std::strtod(v.c_str(), &end);
+      if (end != v.c_str() + v.size() || !(s > 0.0) || !(s < 1e7)) {
+        throw InputError("adsd plan: --time: expected seconds > 0, got '" + v + "'");
+      }
+      a.seconds = s;
+    } else if (arg == "--objective") {
+      const std::string& v = value();
+      if (v == "length") {
+        a.objective = ObjectiveKind::length;
+      } else if (v == "clearance") {
+        a.objective = ObjectiveKind::maxMinClearance;
+      } else {
+        throw InputError("adsd plan: --objective: expected length or clearance, got '" + v + "'");
+      }
+    } else if (arg == "--checker") {
+      const std::string& v = value();
+      if (v == "adsd") {
+        a.checker = CheckerKind::adsd;
+      } else if (v == "fcl") {
+        a.checker = CheckerKind::fcl;
+      } else {
+        throw InputError("adsd plan: --checker: expected adsd or fcl, got '" + v + "'");
+      }
+    } else if (arg == "--motion") {
+      const std::string& v = value();
+      if (v == "discrete") {
+        a.motion = MotionKind::discrete;
+      } else if (v == "certified") {
+        a.motion = MotionKind::certified;
+      } else {
+        throw InputError("adsd plan: --motion: expected discrete or certified, got '" + v + "'");
+      }
+    } else if (arg == "--path") {
+      a.pathFile = value();
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw InputError("adsd plan: unknown option '" + arg + "'");
+    } else if (a.problem.empty()) {
+      a.problem = arg;
+    } else {
+      throw InputError("adsd plan: more than one problem file ('" + a.problem + "', '" + arg + "')");
+    }
+  }
+  if (a.problem.empty()) a.problem = defaultProblemFile();
+  return a;
+}
+
+const char* name(CheckerKind k) { return k == CheckerKind::adsd ? "adsd" : "fcl"; }
+const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" : "certified"; }
+const char* name(ObjectiveKind k) { return k == ObjectiveKind::length ? "length" : "max_min_clearance"; }
+
+/// The planner: --planner, else the file's first [planner] entry, else RRTConnect. The file's
+/// parameters for that planner apply either way.
+ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& file, PlanningProblem& problem,
+                                     std::string& chosen) {
+  const PlannerEntry* entry = nullptr;
+  if (a.planner) {
+    chosen = *a.planner;
+    for (const PlannerEntry& p : file.planners) {
+      if (p.name == chosen) {
+        entry = &p;
+        break;
+      }
+    }
+  } else if (!file.planners.empty()) {
+    entry = &file.planners.front();
+    chosen = entry->name;
+  } else {
+    chosen = "rrtconnect";
+  }
+  ompl::base::PlannerPtr planner = makePlanner(chosen, problem.spaceInformation());
+  if (!planner) {
+    std::string known;
+    for (const std::string& n : knownPlannerNames()) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("adsd plan: --planner: no planner named '" + chosen + "' (known: " + known + ")");
+  }
+  if (entry != nullptr) {
+    for (const Setting& s : entry->parameters) {
+      if (!planner->params().hasParam(s.key)) {
+        std::cerr << "adsd plan: warning: " << s.location.describe() << ": " << chosen << " has no parameter '"
+                  << s.key << "', ignored\n";
+      } else if (!planner->params().setParam(s.key, s.value)) {
+        throw InputError(s.location.describe() + ": " + chosen + " rejected the value '" + s.value + "'");
+      }
+    }
+  }
+  return planner;
+}
+
+int plan(const std::vector<std::string>& args) {
+  const PlanArguments a = parseArguments(args);
+  const ProblemFile file = readProblemFile(a.problem);
+  for (const std::string& w : file.warnings) std::cerr << "adsd plan: warning: " << w << '\n';
+
+  CheckingOptions options;
+  options.checker = a.checker;
+  options.motion = a.motion;
+  options.objective = a.objective;
+  PlanningProblem problem(file, options);
+  for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';
+
+  std::string plannerName;
+  ompl::geometric::SimpleSetup& ss = problem.setup();
+  ss.setPlanner(choosePlanner(a, file, problem, plannerName));
+  const double seconds = a.seconds.value_or(file.benchmark.timeLimit.value_or(10.0));
+
+  ss.setup();
+  const ompl::time::point started = ompl::time::now();
+  const ompl::base::PlannerStatus status = ss.solve(seconds);
+  const double planningSeconds = ompl::time::seconds(ompl::time::now() - started);
+  const bool solved = status == ompl::base::PlannerStatus::EXACT_SOLUTION;
+
+  double simplifySeconds = 0.0;
+  if (solved) {
+    const ompl::time::point s = ompl::time::now();
+    ss.simplifySolution(seconds);
+    simplifySeconds = ompl::time::seconds(ompl::time::now() - s);
+  }
+  const QueryCounts counts = problem.checker()->counts();
+
+  std::printf("problem     %s (%s, %s)\n", file.name.c_str(), file.space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)",
+              a.problem.c_str());
+  std::printf("setup       planner %s, checker %s, motion %s, objective %s, time limit %g s\n", plannerName.c_str(),
+              name(a.checker), name(a.motion), name(problem.objective()), seconds);
+  std::printf("solved      %s (%s)\n", solved ? "yes" : "no", status.asString().c_str());
+  std::printf("time        %.3f s planning, %.3f s simplifying\n", planningSeconds, simplifySeconds);
+  std::printf("queries     %llu validity checks (mean %.2f us), %llu clearance queries (mean %.2f us)\n",
+              static_cast<unsigned long long>(counts.validityChecks), 1e6 * counts.meanValiditySeconds(),
+              static_cast<unsigned long long>(counts.clearanceQueries), 1e6 * counts.meanClearanceSeconds());
+  if (problem.certifiedValidator()) {
+    const MotionCounts m = problem.certifiedValidator()->counts();
+    std::printf("motions     %llu certified checks, %llu rejected, %llu clearance steps\n",
+                static_cast<unsigned long long>(m.motions), static_cast<unsigned long long>(m.rejected),
+                static_cast<unsigned long long>(m.clearanceSteps));
+  }
+  if (!solved) return 1;
+
+  const ompl::geometric::PathGeometric& path = ss.getSolutionPath();
+  const PathMeasures measures = measurePath(path, *problem.checker());
+  std::printf("path        %zu states, length %.6g\n", path.getStateCount(), measures.length);
+  std::printf("clearance   min %.6g, mean %.6g (over %zu states at the validity-checking resolution)\n",
+              measures.minClearance, measures.meanClearance, measures.statesSampled);
+  if (a.pathFile) {
+    writePathFile(*a.pathFile, path, file.space);
+    std::printf("path file   %s\n", a.pathFile->c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+/// \brief Entry point of `adsd plan`; \p args are the arguments after "plan".
+int planCommand(const std::vector<std::string>& args) {
+  ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << kUsage;
+    return 0;
+  }
+  try {
+    return plan(args);
+  } catch (const InputError& e) {
+    std::cerr << "adsd plan: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "adsd plan: internal error: " << e.what() << '\n';
+    return 1;
+  }
+}
+
+}  // namespace adsd::app

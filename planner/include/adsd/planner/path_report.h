@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// \brief Measuring a solution path and writing it in OMPL.app's `.path` format.
+
+#include <cstddef>
+#include <string>
+
+#include <ompl/geometric/PathGeometric.h>
+
+#include "adsd/planner/rigid_body_validity_checker.h"
+
+namespace adsd::planner {
+
+/// \brief Length and clearance of a path.
+struct PathMeasures {
+  double length = 0.0;
+  double minClearance = 0.0;   ///< over the states sampled along the path
+  double meanClearance = 0.0;
+  std::size_t statesSampled = 0;
+};
+
+/// \brief Measures \p path: its length, and the checker's clearance at its states after
+/// interpolating it to the space's validity-checking resolution (a copy is interpolated; the path
+/// is unchanged). The clearance queries count on the checker like any other.
+PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const RigidBodyValidityChecker& checker);
+
+/// \brief Writes one state per line, its real values separated by spaces (SE(2): x y yaw;
+/// SE(3): x y z qx qy qz qw). Written to a temporary file renamed on success, so a failure
+/// leaves nothing half-written; throws adsd::InputError naming the file when it cannot be written.
+void writePathFile(const std::string& file, const ompl::geometric::PathGeometric& path, RigidBodySpace space);
+
+}  // namespace adsd::planner

@@ -1,0 +1,45 @@
+#pragma once
+/// \file
+/// \brief What a rigid-body planning problem is made of: robot meshes, environment meshes, and
+/// whether the robot moves in SE(2) or SE(3).
+
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "adsd/mesh.h"
+
+namespace adsd::planner {
+
+/// \brief The configuration space of the robot.
+enum class RigidBodySpace {
+  se2,  ///< x, y, yaw: the robot moves in the plane z = 0, rotating about z (checked in 3D).
+  se3,  ///< x, y, z and a rotation.
+};
+
+/// \brief A robot of one or more meshes (all in the robot's body frame, moving together) and an
+/// environment of one or more meshes (in the world frame, never moving).
+///
+/// Read-only once built, so any number of threads may query it.
+struct RigidBodyScene {
+  std::vector<Mesh> robot;
+  std::vector<Mesh> environment;
+  RigidBodySpace space = RigidBodySpace::se3;
+};
+
+/// \brief Largest distance of a robot vertex from the body-frame origin: the radius that turns a
+/// rotation angle into a bound on how far any robot point moves (issue 4, certified motion).
+double robotRadius(const RigidBodyScene& scene);
+
+/// \brief Axis-aligned box of every environment vertex, world frame.
+Eigen::AlignedBox3d environmentBounds(const RigidBodyScene& scene);
+
+/// \brief Length of the diagonal of the box holding the environment and the robot's reach
+/// (environment box widened by the robot radius): the scene's length scale for tolerances.
+double sceneScale(const RigidBodyScene& scene);
+
+/// \brief Re-centres a robot mesh the OMPL.app way: subtracts the mean of its vertices, with the
+/// z component of that mean kept at zero for SE(2) problems (shared/OMPLAPP-CFG.md).
+Mesh recentreRobot(const Mesh& robot, RigidBodySpace space);
+
+}  // namespace adsd::planner

@@ -1,0 +1,110 @@
+#include "adsd/planner/certified_motion_validator.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "adsd/planner/state_pose.h"
+
+namespace adsd::planner {
+
+namespace ob = ompl::base;
+
+CertifiedMotionValidator::CertifiedMotionValidator(const ob::SpaceInformationPtr& si,
+                                                   std::shared_ptr<const RigidBodyValidityChecker> checker)
+    : ob::MotionValidator(si), checker_(std::move(checker)) {}
+
+bool CertifiedMotionValidator::certify(const ob::State* s1, const ob::State* s2, double& lastValidT) const {
+  lastValidT = 0.0;
+  const RigidBodySpace space = checker_->space();
+  const double margin = checker_->safetyMargin();
+  // Rounding allowance given away by every step (see kDistanceTrustFraction).
+  const double trust = kDistanceTrustFraction * checker_->scale();
+  // Bound on how far any robot point moves per unit of the motion parameter t.
+  const double sweep =
+      translationDistance(s1, s2, space) + rotationAngle(s1, s2, space) * checker_->robotRadius();
+
+  ob::State* state = si_->allocState();
+  double t = 0.0;
+  bool proven = false;
+  while (true) {
+    if (t == 0.0) {
+      si_->copyState(state, s1);
+    } else {
+      si_->getStateSpace()->interpolate(s1, s2, t, state);
+    }
+    // Enough clearance to finish in one step is all this query needs to establish (one more
+    // `trust` so that a capped answer carries the step past s2 despite rounding).
+    const double needed = margin + 2.0 * trust + sweep * (1.0 - t);
+    const double clearance = checker_->clearanceUpTo(state, needed);
+    clearanceSteps_.fetch_add(1, std::memory_order_relaxed);
+    const double spare = clearance - margin - trust;
+    if (!(spare > 0.0)) break;  // this state is not proven valid
+    lastValidT = t;
+    if (t >= 1.0) {
+      proven = true;
+      break;
+    }
+    if (sweep <= 0.0) {  // s1 == s2 as poses: the one query decided it
+      proven = true;
+      break;
+    }
+    // Every state in [t, t + step] is farther than the margin: its distance is at least
+    // clearance - sweep * step = margin + trust.
+    const double step = spare / sweep;
+    if (t + step >= 1.0) {
+      proven = true;
+      break;
+    }
+    if (step < kMinimumStepFraction) break;  // grazing: not provable at this cost (see the constant)
+    t += step;
+  }
+  si_->freeState(state);
+  return proven;
+}
+
+bool CertifiedMotionValidator::checkMotion(const ob::State* s1, const ob::State* s2) const {
+  motions_.fetch_add(1, std::memory_order_relaxed);
+  // The end state's bounds: positions interpolate linearly and the bounds are a box, so if both
+  // ends are inside so is the whole motion (s1 is valid by OMPL's contract).
+  // A cheap threshold query on s2 first: a motion into an obstacle is rejected without walking up
+  // to the obstacle by ever shorter steps.
+  bool valid = si_->satisfiesBounds(s2) && checker_->isValid(s2);
+  double lastValidT = 0.0;
+  if (valid) valid = certify(s1, s2, lastValidT);
+  if (!valid) rejected_.fetch_add(1, std::memory_order_relaxed);
+  return valid;
+}
+
+bool CertifiedMotionValidator::checkMotion(const ob::State* s1, const ob::State* s2,
+                                           std::pair<ob::State*, double>& lastValid) const {
+  motions_.fetch_add(1, std::memory_order_relaxed);
+  double lastValidT = 0.0;
+  bool valid = certify(s1, s2, lastValidT);
+  if (valid && !si_->satisfiesBounds(s2)) {
+    valid = false;
+    // The last state inside the bounds is not located exactly; the start is certainly inside.
+    lastValidT = 0.0;
+  }
+  if (!valid) {
+    rejected_.fetch_add(1, std::memory_order_relaxed);
+    if (lastValid.first != nullptr) si_->getStateSpace()->interpolate(s1, s2, lastValidT, lastValid.first);
+    lastValid.second = lastValidT;
+  }
+  return valid;
+}
+
+MotionCounts CertifiedMotionValidator::counts() const {
+  MotionCounts c;
+  c.motions = motions_.load(std::memory_order_relaxed);
+  c.rejected = rejected_.load(std::memory_order_relaxed);
+  c.clearanceSteps = clearanceSteps_.load(std::memory_order_relaxed);
+  return c;
+}
+
+void CertifiedMotionValidator::resetCounts() {
+  motions_ = 0;
+  rejected_ = 0;
+  clearanceSteps_ = 0;
+}
+
+}  // namespace adsd::planner

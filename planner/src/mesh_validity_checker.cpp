@@ -1,0 +1,87 @@
+#include "adsd/planner/mesh_validity_checker.h"
+
+#include <cmath>
+#include <limits>
+
+#include "adsd/error.h"
+
+namespace adsd::planner {
+
+namespace {
+
+/// The scratch of the calling thread (see the class comment: one per thread serves every checker).
+DistanceScratch& threadScratch() {
+  thread_local DistanceScratch scratch;
+  return scratch;
+}
+
+void requireClearanceOptions(const DistanceOptions& o) {
+  switch (o.mode) {
+    case QueryMode::exact:
+      return;
+    case QueryMode::tolerance:
+      if (!(o.absTolerance >= 0.0) || !(o.relTolerance >= 0.0) || !std::isfinite(o.absTolerance) ||
+          !std::isfinite(o.relTolerance)) {
+        throw InputError("clearance options: tolerances must be finite and >= 0");
+      }
+      return;
+    case QueryMode::cap:
+      if (!(o.cap > 0.0)) throw InputError("clearance options: the cap must be > 0");
+      return;
+    case QueryMode::threshold:
+      break;
+  }
+  throw InputError("clearance options: the threshold mode answers validity, not clearance; use exact, tolerance or cap");
+}
+
+}  // namespace
+
+MeshValidityChecker::MeshValidityChecker(const ompl::base::SpaceInformationPtr& si,
+                                         std::shared_ptr<const RigidBodyScene> scene, double safetyMargin,
+                                         const DistanceOptions& clearanceOptions)
+    : RigidBodyValidityChecker(si, std::move(scene), safetyMargin), clearanceOptions_(clearanceOptions) {
+  requireClearanceOptions(clearanceOptions_);
+  // Honest about what clearance() returns: exact, or a lower bound (tolerance: the interval's lower
+  // end; cap: min(distance, cap)).
+  specs_.clearanceComputationType = clearanceOptions_.mode == QueryMode::exact
+                                        ? ompl::base::StateValidityCheckerSpecs::EXACT
+                                        : ompl::base::StateValidityCheckerSpecs::BOUNDED_APPROXIMATE;
+}
+
+bool MeshValidityChecker::pairSeparatedAbove(std::size_t r, std::size_t e, const Pose& robotPose,
+                                             double margin) const {
+  const DistanceResult result = distance(scene_->robot[r], robotPose, scene_->environment[e], Pose::Identity(),
+                                         DistanceOptions::aboveThreshold(margin), threadScratch());
+  return result.status == DistanceStatus::aboveThreshold;
+}
+
+RigidBodyValidityChecker::PairDistance MeshValidityChecker::pairDistance(std::size_t r, std::size_t e,
+                                                                         const Pose& robotPose, double cap) const {
+  DistanceOptions options = clearanceOptions_;
+  if (options.mode == QueryMode::exact || options.mode == QueryMode::cap) {
+    // Exact below the smaller cap: the caller needs nothing above `cap`, the settings nothing
+    // above their own.
+    const double needed = std::min(cap, options.cap);
+    if (std::isfinite(needed)) {
+      options = DistanceOptions::cappedAt(needed);
+    }
+  }
+  const DistanceResult result =
+      distance(scene_->robot[r], robotPose, scene_->environment[e], Pose::Identity(), options, threadScratch());
+  PairDistance d;
+  switch (result.status) {
+    case DistanceStatus::beyondCap:
+      d.lower = result.lower;
+      d.reachedCap = result.lower >= cap;
+      break;
+    case DistanceStatus::withinTolerance:
+      d.lower = result.lower;
+      break;
+    default:
+      d.lower = result.distance;
+      break;
+  }
+  return d;
+}
+
+}  // namespace adsd::planner

@@ -1,0 +1,73 @@
+#include "adsd/planner/path_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/base/spaces/SE3StateSpace.h>
+
+#include "adsd/error.h"
+
+namespace adsd::planner {
+
+namespace ob = ompl::base;
+
+PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const RigidBodyValidityChecker& checker) {
+  PathMeasures m;
+  m.length = path.length();
+  ompl::geometric::PathGeometric dense(path);
+  dense.interpolate();  // states at the space's validity-checking resolution
+  double sum = 0.0;
+  m.minClearance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < dense.getStateCount(); ++i) {
+    const double c = checker.clearance(dense.getState(i));
+    m.minClearance = std::min(m.minClearance, c);
+    sum += c;
+  }
+  m.statesSampled = dense.getStateCount();
+  if (m.statesSampled == 0) {
+    m.minClearance = 0.0;
+  } else {
+    m.meanClearance = sum / static_cast<double>(m.statesSampled);
+  }
+  return m;
+}
+
+void writePathFile(const std::string& file, const ompl::geometric::PathGeometric& path, RigidBodySpace space) {
+  const std::string temporary = file + ".partial";
+  {
+    std::ofstream out(temporary);
+    if (!out) throw InputError(file + ": cannot write the path file");
+    out << std::setprecision(17);
+    for (std::size_t i = 0; i < path.getStateCount(); ++i) {
+      const ob::State* s = path.getState(i);
+      if (space == RigidBodySpace::se2) {
+        const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
+        out << se2->getX() << ' ' << se2->getY() << ' ' << se2->getYaw() << '\n';
+      } else {
+        const auto* se3 = s->as<ob::SE3StateSpace::StateType>();
+        const auto& q = se3->rotation();
+        out << se3->getX() << ' ' << se3->getY() << ' ' << se3->getZ() << ' ' << q.x << ' ' << q.y << ' ' << q.z
+            << ' ' << q.w << '\n';
+      }
+    }
+    out.flush();
+    if (!out) {
+      out.close();
+      std::remove(temporary.c_str());
+      throw InputError(file + ": writing the path file failed");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, file, ec);
+  if (ec) {
+    std::remove(temporary.c_str());
+    throw InputError(file + ": cannot rename the finished path file into place: " + ec.message());
+  }
+}
+
+}  // namespace adsd::planner

@@ -1,0 +1,110 @@
+#include "adsd/planner/planner_registry.h"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+
+#include <ompl/geometric/planners/AnytimePathShortening.h>
+#include <ompl/geometric/planners/cforest/CForest.h>
+#include <ompl/geometric/planners/est/BiEST.h>
+#include <ompl/geometric/planners/est/EST.h>
+#include <ompl/geometric/planners/fmt/BFMT.h>
+#include <ompl/geometric/planners/fmt/FMT.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/kpiece/BKPIECE1.h>
+#include <ompl/geometric/planners/kpiece/KPIECE1.h>
+#include <ompl/geometric/planners/kpiece/LBKPIECE1.h>
+#include <ompl/geometric/planners/pdst/PDST.h>
+#include <ompl/geometric/planners/prm/LazyPRM.h>
+#include <ompl/geometric/planners/prm/LazyPRMstar.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/prm/SPARS.h>
+#include <ompl/geometric/planners/prm/SPARStwo.h>
+#include <ompl/geometric/planners/rrt/BiTRRT.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/LBTRRT.h>
+#include <ompl/geometric/planners/rrt/LazyRRT.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTsharp.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/geometric/planners/rrt/TRRT.h>
+#include <ompl/geometric/planners/sbl/SBL.h>
+#include <ompl/geometric/planners/sst/SST.h>
+#include <ompl/geometric/planners/stride/STRIDE.h>
+
+namespace adsd::planner {
+
+namespace {
+
+namespace og = ompl::geometric;
+using Allocator = std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr&)>;
+
+template <class P>
+Allocator allocator() {
+  return [](const ompl::base::SpaceInformationPtr& si) { return std::make_shared<P>(si); };
+}
+
+/// OMPL.app's lower-case names (shared/OMPLAPP-CFG.md), in a stable order.
+const std::vector<std::pair<std::string, Allocator>>& registry() {
+  static const std::vector<std::pair<std::string, Allocator>> planners = {
+      {"rrtconnect", allocator<og::RRTConnect>()},
+      {"rrt", allocator<og::RRT>()},
+      {"rrtstar", allocator<og::RRTstar>()},
+      {"informedrrtstar", allocator<og::InformedRRTstar>()},
+      {"rrtsharp", allocator<og::RRTsharp>()},
+      {"lazyrrt", allocator<og::LazyRRT>()},
+      {"trrt", allocator<og::TRRT>()},
+      {"bitrrt", allocator<og::BiTRRT>()},
+      {"lbtrrt", allocator<og::LBTRRT>()},
+      {"prm", allocator<og::PRM>()},
+      {"prmstar", allocator<og::PRMstar>()},
+      {"lazyprm", allocator<og::LazyPRM>()},
+      {"lazyprmstar", allocator<og::LazyPRMstar>()},
+      {"spars", allocator<og::SPARS>()},
+      {"spars2", allocator<og::SPARStwo>()},
+      {"kpiece", allocator<og::KPIECE1>()},
+      {"bkpiece", allocator<og::BKPIECE1>()},
+      {"lbkpiece", allocator<og::LBKPIECE1>()},
+      {"est", allocator<og::EST>()},
+      {"biest", allocator<og::BiEST>()},
+      {"sbl", allocator<og::SBL>()},
+      {"stride", allocator<og::STRIDE>()},
+      {"pdst", allocator<og::PDST>()},
+      {"bitstar", allocator<og::BITstar>()},
+      {"fmt", allocator<og::FMT>()},
+      {"bfmt", allocator<og::BFMT>()},
+      {"sst", allocator<og::SST>()},
+      {"cforest", allocator<og::CForest>()},
+      {"anytimepathshortening", allocator<og::AnytimePathShortening>()},
+  };
+  return planners;
+}
+
+}  // namespace
+
+const std::vector<std::string>& knownPlannerNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& entry : registry()) n.push_back(entry.first);
+    return n;
+  }();
+  return names;
+}
+
+ompl::base::PlannerPtr makePlanner(const std::string& name, const ompl::base::SpaceInformationPtr& si) {
+  for (const auto& [known, make] : registry()) {
+    if (known == name) return make(si);
+  }
+  return nullptr;
+}
+
+bool isOptimizingPlanner(const std::string& name) {
+  static const std::vector<std::string> optimizing = {"rrtstar", "informedrrtstar", "rrtsharp", "prmstar",
+                                                      "lazyprmstar", "lbtrrt", "bitstar", "fmt", "bfmt",
+                                                      "sst", "cforest", "anytimepathshortening", "spars", "spars2"};
+  return std::find(optimizing.begin(), optimizing.end(), name) != optimizing.end();
+}
+
+}  // namespace adsd::planner
