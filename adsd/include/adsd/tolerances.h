@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// \brief Every tolerance of the core in one place, each with its unit, scale and reason
+/// (STYLE habit 3). Values are relative to a named length scale unless stated.
+
+#include <limits>
+
+namespace adsd::tolerance {
+
+/// Unit roundoff of double (dimensionless), the yardstick of everything below.
+inline constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+
+/// Triangle routine: a computed distance at or below this many units of roundoff of the local
+/// coordinate scale (largest coordinate after moving the origin to the first corner of triangle A)
+/// is indistinguishable from contact and reported as exactly 0. About 1e-15 relative: far below the
+/// 1e-10 x diagonal accuracy we promise, far above what a touching pair computes to (a few ulps).
+inline constexpr double kContactSnapUlps = 4.0;
+
+/// Triangle routine: two edge directions count as parallel when |d1 x d2|^2 <= this x |d1|^2 |d2|^2
+/// (i.e. the angle is below ~1e-15 rad). The interior edge–edge candidate is then skipped: the
+/// endpoints' candidates are within angle x length of it, below roundoff.
+inline constexpr double kParallelSine2 = 1e-30;
+
+/// Triangle routine: a triangle is treated as a segment or point (no interior) when
+/// |n|^2 <= this x (longest edge)^4, n the unnormalized normal (sine of the smallest angle ~1e-15).
+inline constexpr double kDegenerateArea2 = 1e-30;
+
+/// Bounds: every GJK lower bound used for pruning or for sizing the hash grid is lowered by this
+/// many units of roundoff of the coordinate magnitude M (largest |coordinate| of either mesh in
+/// mesh A's frame). A dot product of coordinates of size M carries an error of about 3 eps M, a
+/// difference of two such about 6 eps M; 64 leaves a factor of ten. Without it a lower bound that
+/// rounds high could prune the true closest pair (tested by the near-contact and large-offset
+/// stress families).
+inline constexpr double kBoundSafetyUlps = 64.0;
+
+/// GJK: iteration cap. Polytope GJK converges in far fewer steps in practice; the cap only
+/// guarantees termination. Hitting it is harmless here: an unproven separation is split (sec. 6).
+inline constexpr int kGjkMaxIterations = 64;
+
+/// GJK: stop when the gap between the hull distance |v| and the best lower bound is below this
+/// fraction of |v| (dimensionless). The lower bound only sizes the slab (eq. 1) and the cells
+/// (eq. 3), where a 1e-3 looser bound costs nothing measurable, while the last digits cost
+/// iterations.
+inline constexpr double kGjkRelativeGap = 1e-3;
+
+/// GJK: |v|^2 at or below this x M^2 counts as the origin being reached (hulls touch or overlap).
+inline constexpr double kGjkTouchRelative2 = 1e-28;
+
+/// Splitting (sec. 6.1): the support-plane split is kept when the part it cuts off holds at least
+/// this fraction of the sub-mesh's triangles; otherwise the sub-mesh is halved at the median along
+/// the same direction, which bounds the recursion depth by log_{1/(1-f)} n.
+inline constexpr double kMinSplitFraction = 1.0 / 8.0;
+
+/// Sub-mesh pairs with at most this many triangle pairs are tested directly, without GJK: a few
+/// triangle tests cost less than a GJK run (sec. 6.1 stops at one primitive; this is the same
+/// rule, a little earlier).
+inline constexpr int kDirectPairLimit = 16;
+
+/// Hashing (sec. 5): slab pairs up to this count are tested all against all (with a box bound
+/// first): building the hash costs more than it saves below it.
+inline constexpr int kHashMinPairs = 256;
+
+/// Hashing: a triangle whose box covers more cells than this is not hashed but tested against
+/// every triangle of the other slab (with a box bound): keeps the table linear in size.
+inline constexpr int kMaxCellsPerTriangle = 64;
+
+/// Hashing: cells per axis at most (cell size grows to respect it), so cell indices fit easily in
+/// 32 bits whatever the ratio of scene size to cell size.
+inline constexpr double kMaxCellsPerAxis = 1 << 20;
+
+}  // namespace adsd::tolerance

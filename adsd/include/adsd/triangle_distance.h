@@ -1,0 +1,25 @@
+#pragma once
+/// \file
+/// \brief Exact distance between two triangles in every feature combination.
+
+#include "adsd/mesh.h"
+
+namespace adsd {
+
+/// \brief The closest pair of points of two triangles.
+struct TrianglePairResult {
+  double distance = 0.0;  ///< |pointOnA - pointOnB|; 0 when the triangles intersect or touch
+  Vec3 pointOnA = Vec3::Zero();
+  Vec3 pointOnB = Vec3::Zero();
+};
+
+/// \brief Minimum distance between triangles (a0, a1, a2) and (b0, b1, b2), all in one frame.
+///
+/// Handles vertex–face, edge–edge, parallel, coplanar, intersecting and zero-area (segment or
+/// point) triangles. Every candidate it weighs is a distance between two actual points of the
+/// triangles, so rounding can only make the answer slightly too large, never too small; the
+/// witness points always lie on the triangles up to rounding.
+TrianglePairResult triangleDistance(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0,
+                                    const Vec3& b1, const Vec3& b2);
+
+}  // namespace adsd

@@ -1,0 +1,264 @@
+// The public query: validation, the frame set-up, the mode's rules, and the result.
+
+#include "adsd/distance.h"
+
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "adsd/error.h"
+#include "query.h"
+
+namespace adsd {
+
+const char* toString(DistanceStatus status) {
+  switch (status) {
+    case DistanceStatus::exact: return "exact";
+    case DistanceStatus::withinTolerance: return "within-tolerance";
+    case DistanceStatus::aboveThreshold: return "above-threshold";
+    case DistanceStatus::withinThreshold: return "within-threshold";
+    case DistanceStatus::beyondCap: return "beyond-cap";
+  }
+  return "unknown";
+}
+
+DistanceScratch::DistanceScratch() : buffers_(std::make_unique<Buffers>()) {}
+DistanceScratch::~DistanceScratch() = default;
+DistanceScratch::DistanceScratch(DistanceScratch&&) noexcept = default;
+DistanceScratch& DistanceScratch::operator=(DistanceScratch&&) noexcept = default;
+
+namespace detail {
+
+namespace {
+
+void validate(const DistanceOptions& o, const Pose& poseA, const Pose& poseB) {
+  if (!poseA.matrix().allFinite()) throw InputError("distance query: pose of mesh A has a non-finite entry");
+  if (!poseB.matrix().allFinite()) throw InputError("distance query: pose of mesh B has a non-finite entry");
+  switch (o.mode) {
+    case QueryMode::exact: break;
+    case QueryMode::tolerance:
+      if (!(o.absTolerance >= 0.0) || !std::isfinite(o.absTolerance))
+        throw InputError("distance query: absTolerance must be finite and >= 0");
+      if (!(o.relTolerance >= 0.0) || !std::isfinite(o.relTolerance))
+        throw InputError("distance query: relTolerance must be finite and >= 0");
+      break;
+    case QueryMode::threshold:
+      if (!(o.threshold >= 0.0) || !std::isfinite(o.threshold))
+        throw InputError("distance query: threshold must be finite and >= 0");
+      break;
+    case QueryMode::cap:
+      if (!(o.cap > 0.0)) throw InputError("distance query: cap must be > 0");
+      break;
+  }
+}
+
+}  // namespace
+
+Query::Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB, const DistanceOptions& options,
+             DistanceScratch::Buffers& buffers)
+    : a_(a), b_(b), poseA_(poseA), options_(options), buf_(buffers) {
+  // Mesh A's frame is the working frame: A needs no transform, and B's pose relative to A keeps
+  // translations that are large but common to both poses out of the arithmetic.
+  const Eigen::Matrix3d rA = poseA.linear();
+  rotationBA_ = rA.transpose() * poseB.linear();
+  translationBA_ = rA.transpose() * (poseB.translation() - poseA.translation());
+  rotationAB_ = rotationBA_.transpose();
+  magnitude_ = std::sqrt(3.0) * (a.maxAbsCoordinate() + b.maxAbsCoordinate()) + translationBA_.norm();
+  roundoff_ = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude_;
+}
+
+SupportPoint Query::supportA(std::uint32_t a0, std::uint32_t a1, const Vec3& d) const {
+  SupportPoint s;
+  double bestValue = -std::numeric_limits<double>::infinity();
+  const std::vector<Vec3>& vertices = a_.vertices();
+  if (a0 == 0 && a1 == a_.triangleCount() && a_.allVerticesReferenced()) {
+    // Whole mesh: each vertex once instead of each corner of each triangle.
+    for (std::uint32_t v = 0; v < vertices.size(); ++v) {
+      const double value = d.dot(vertices[v]);
+      if (value > bestValue) {
+        bestValue = value;
+        s.feature = v;
+      }
+    }
+    s.isVertex = true;
+    s.point = vertices[s.feature];
+    return s;
+  }
+  std::uint32_t bestVertex = 0;
+  for (std::uint32_t i = a0; i < a1; ++i) {
+    const std::uint32_t t = buf_.orderA[i];
+    for (std::uint32_t v : a_.triangles()[t]) {
+      const double value = d.dot(vertices[v]);
+      if (value > bestValue) {
+        bestValue = value;
+        s.feature = t;
+        bestVertex = v;
+      }
+    }
+  }
+  s.point = vertices[bestVertex];
+  return s;
+}
+
+SupportPoint Query::supportB(std::uint32_t b0, std::uint32_t b1, const Vec3& dInA) const {
+  // Support in B's own frame with the direction rotated into it (no vertex is transformed but
+  // the winner).
+  const Vec3 d = rotationAB_ * dInA;
+  SupportPoint s;
+  double bestValue = -std::numeric_limits<double>::infinity();
+  const std::vector<Vec3>& vertices = b_.vertices();
+  std::uint32_t bestVertex = 0;
+  if (b0 == 0 && b1 == b_.triangleCount() && b_.allVerticesReferenced()) {
+    for (std::uint32_t v = 0; v < vertices.size(); ++v) {
+      const double value = d.dot(vertices[v]);
+      if (value > bestValue) {
+        bestValue = value;
+        bestVertex = v;
+      }
+    }
+    s.isVertex = true;
+    s.feature = bestVertex;
+  } else {
+    for (std::uint32_t i = b0; i < b1; ++i) {
+      const std::uint32_t t = buf_.orderB[i];
+      for (std::uint32_t v : b_.triangles()[t]) {
+        const double value = d.dot(vertices[v]);
+        if (value > bestValue) {
+          bestValue = value;
+          s.feature = t;
+          bestVertex = v;
+        }
+      }
+    }
+  }
+  s.point = toA(vertices[bestVertex]);
+  return s;
+}
+
+bool Query::skip(double lowerSafe) {
+  bool drop = false;
+  switch (options_.mode) {
+    case QueryMode::exact: drop = lowerSafe >= best_; break;
+    case QueryMode::tolerance:
+      // Slack measured on the pair's own lower bound, not on the running best: the running best
+      // only falls, and the interval's width must hold for the final one.
+      drop = lowerSafe + std::max(options_.absTolerance, options_.relTolerance * std::max(lowerSafe, 0.0)) >= best_;
+      break;
+    case QueryMode::threshold: drop = lowerSafe > options_.threshold || lowerSafe >= best_; break;
+    case QueryMode::cap: drop = lowerSafe >= std::min(best_, options_.cap); break;
+  }
+  if (drop) minSkippedLower_ = std::min(minSkippedLower_, lowerSafe);
+  return drop;
+}
+
+double Query::geometricBound() const {
+  switch (options_.mode) {
+    case QueryMode::threshold: return std::min(best_, options_.threshold);
+    case QueryMode::cap: return std::min(best_, options_.cap);
+    default: return best_;
+  }
+}
+
+void Query::offer(const Vec3& onA, const Vec3& onB, double d, std::int64_t featureA, bool vertexA,
+                  std::int64_t featureB, bool vertexB) {
+  if (!(d < best_)) return;
+  best_ = d;
+  bestOnA_ = onA;
+  bestOnB_ = onB;
+  bestFeatureA_ = featureA;
+  bestFeatureB_ = featureB;
+  bestVertexA_ = vertexA;
+  bestVertexB_ = vertexB;
+  if (options_.mode == QueryMode::threshold && best_ <= options_.threshold) done_ = true;
+}
+
+void Query::offer(const PointPair& pair) {
+  offer(pair.a.point, pair.b.point, pair.distance, pair.a.feature, pair.a.isVertex, pair.b.feature, pair.b.isVertex);
+}
+
+namespace {
+
+/// A witness found by a whole-mesh vertex scan names a vertex; the result names a triangle.
+std::int64_t triangleWithVertex(const Mesh& mesh, std::int64_t vertex) {
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    for (std::uint32_t v : mesh.triangles()[t]) {
+      if (v == vertex) return static_cast<std::int64_t>(t);
+    }
+  }
+  return -1;
+}
+
+}  // namespace
+
+DistanceResult Query::run() {
+  const std::uint32_t nA = static_cast<std::uint32_t>(a_.triangleCount());
+  const std::uint32_t nB = static_cast<std::uint32_t>(b_.triangleCount());
+  buf_.orderA.resize(nA);
+  buf_.orderB.resize(nB);
+  std::iota(buf_.orderA.begin(), buf_.orderA.end(), 0u);
+  std::iota(buf_.orderB.begin(), buf_.orderB.end(), 0u);
+  buf_.lowA.resize(nA);
+  buf_.highA.resize(nA);
+  buf_.lowB.resize(nB);
+  buf_.highB.resize(nB);
+
+  // First search vector: from a corner of B to a corner of A (any non-zero guess of a - b).
+  const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
+  visit(0, nA, 0, nB, 0, start);
+
+  DistanceResult r;
+  r.counters = counters_;
+  r.upper = best_;
+  r.distance = best_;
+  r.lower = std::max(0.0, std::min(best_, minSkippedLower_));
+  r.witnessA = poseA_ * bestOnA_;
+  r.witnessB = poseA_ * bestOnB_;
+  r.triangleA = bestVertexA_ ? triangleWithVertex(a_, bestFeatureA_) : bestFeatureA_;
+  r.triangleB = bestVertexB_ ? triangleWithVertex(b_, bestFeatureB_) : bestFeatureB_;
+  switch (options_.mode) {
+    case QueryMode::exact:
+      r.status = DistanceStatus::exact;
+      r.lower = best_;
+      break;
+    case QueryMode::tolerance:
+      r.status = r.lower == r.upper ? DistanceStatus::exact : DistanceStatus::withinTolerance;
+      break;
+    case QueryMode::threshold:
+      if (best_ <= options_.threshold) {
+        r.status = DistanceStatus::withinThreshold;
+        r.lower = 0.0;  // stopped at the first proof: nothing is known below it
+      } else {
+        r.status = DistanceStatus::aboveThreshold;
+      }
+      break;
+    case QueryMode::cap:
+      if (best_ < options_.cap) {
+        r.status = DistanceStatus::exact;
+        r.lower = best_;
+      } else {
+        r.status = DistanceStatus::beyondCap;
+        r.lower = options_.cap;
+        r.distance = options_.cap;
+      }
+      break;
+  }
+  return r;
+}
+
+}  // namespace detail
+
+DistanceResult distance(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
+                        const DistanceOptions& options, DistanceScratch& scratch) {
+  detail::validate(options, poseA, poseB);
+  detail::Query query(a, poseA, b, poseB, options, scratch.buffers());
+  return query.run();
+}
+
+DistanceResult distance(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
+                        const DistanceOptions& options) {
+  DistanceScratch scratch;
+  return distance(a, poseA, b, poseB, options, scratch);
+}
+
+}  // namespace adsd

@@ -1,0 +1,98 @@
+#pragma once
+// The state of one distance query: the two meshes in mesh A's frame, the running global bounds
+// of sec. 6.2, the mode's rules for dropping work, the counters, and the per-thread buffers.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "adsd/distance.h"
+#include "adsd/tolerances.h"
+#include "gjk.h"
+
+namespace adsd {
+
+/// One triangle admitted to a slab (sec. 5.3), in mesh A's frame, with its box in the grid frame
+/// of sec. 5.1 (x, y in the separating plane, z along the separating direction).
+struct SlabTriangle {
+  Vec3 corner[3];
+  double minX, maxX, minY, maxY, minZ, maxZ;
+  std::uint32_t triangle;
+};
+
+struct DistanceScratch::Buffers {
+  // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
+  // them in place (depth first, so a range holds the same set whenever it is revisited).
+  std::vector<std::uint32_t> orderA, orderB;
+  // Per triangle, its corners' extent along the current split direction.
+  std::vector<double> lowA, highA, lowB, highB;
+  // Stage two.
+  std::vector<SlabTriangle> slabA, slabB;
+  std::vector<std::uint32_t> bigA;            // slab A triangles too large to hash
+  std::vector<std::uint32_t> bucketStart;     // CSR hash table: bucket -> range of entries
+  std::vector<std::uint32_t> bucketEntries;   // slab A indices
+  std::vector<std::uint32_t> entryBucket;     // scratch for building the table
+  std::vector<std::uint32_t> lastVisitor;     // per slab A triangle: last slab B triangle tested + 1
+};
+
+namespace detail {
+
+class Query {
+ public:
+  Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB, const DistanceOptions& options,
+        DistanceScratch::Buffers& buffers);
+
+  /// Runs RecursiveMinDist (Algorithm 1) on the whole meshes and fills the result.
+  DistanceResult run();
+
+ private:
+  // --- stage three and the recursion (decomposition.cpp) ---
+  void visit(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1, int depth, const Vec3& hint);
+  void testAllPairs(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1);
+  // --- stage two (spatial_hash.cpp) ---
+  void hashStage(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1, const GjkResult& g);
+  void testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb);
+
+  // --- supports (eq. 4-5) over a sub-mesh range, in mesh A's frame ---
+  SupportPoint supportA(std::uint32_t a0, std::uint32_t a1, const Vec3& d) const;
+  SupportPoint supportB(std::uint32_t b0, std::uint32_t b1, const Vec3& d) const;
+
+  // --- the mode's rules ---
+  /// May a pair (of sub-meshes or triangles) whose distance is at least `lowerSafe` be dropped?
+  /// Records the bound when it is (for the result's interval).
+  bool skip(double lowerSafe);
+  /// The distance below which pairs matter geometrically: the global upper bound of sec. 6.2,
+  /// tightened by the threshold or cap where the mode has one.
+  double geometricBound() const;
+  void offer(const Vec3& onA, const Vec3& onB, double d, std::int64_t featureA, bool vertexA,
+             std::int64_t featureB, bool vertexB);
+  void offer(const PointPair& pair);
+
+  Vec3 toA(const Vec3& pointOfB) const { return rotationBA_ * pointOfB + translationBA_; }
+
+  const Mesh& a_;
+  const Mesh& b_;
+  const Pose poseA_;
+  const DistanceOptions options_;
+  DistanceScratch::Buffers& buf_;
+  Eigen::Matrix3d rotationBA_;   // B frame -> A frame
+  Vec3 translationBA_;
+  Eigen::Matrix3d rotationAB_;   // directions from A frame into B frame (transpose)
+  double magnitude_ = 0.0;       // largest |coordinate| of either mesh in A's frame
+  double roundoff_ = 0.0;        // kBoundSafetyUlps * eps * magnitude_
+
+  // The global upper bound (sec. 6.2) and where it is attained (A frame).
+  double best_ = std::numeric_limits<double>::infinity();
+  Vec3 bestOnA_ = Vec3::Zero(), bestOnB_ = Vec3::Zero();
+  std::int64_t bestFeatureA_ = -1, bestFeatureB_ = -1;
+  bool bestVertexA_ = false, bestVertexB_ = false;
+  // Smallest lower bound of any pair dropped by the mode's rules (tolerance, threshold, cap).
+  double minSkippedLower_ = std::numeric_limits<double>::infinity();
+  bool done_ = false;  // threshold mode: proven within the threshold
+  DistanceCounters counters_;
+};
+
+}  // namespace detail
+}  // namespace adsd

@@ -1,0 +1,245 @@
+// Stage two (sec. 5): spatial hashing in the frame of the separating plane, sized by the GJK
+// bounds, culling triangle pairs twice (Fig. 2).
+
+#include <algorithm>
+#include <cmath>
+
+#include "adsd/triangle_distance.h"
+#include "query.h"
+
+namespace adsd::detail {
+
+namespace {
+
+/// Cell hash of [THM+03]: large primes mixed by xor, folded into the table size (a power of two).
+/// Distinct cells may share a bucket; the box test behind it removes such false candidates.
+inline std::uint32_t cellHash(std::int64_t ix, std::int64_t iy, std::uint32_t mask) {
+  return static_cast<std::uint32_t>((ix * 73856093) ^ (iy * 19349663)) & mask;
+}
+
+/// Lower bound of the distance of two triangles from their boxes in the grid frame.
+inline double boxDistance(const SlabTriangle& s, const SlabTriangle& t) {
+  const double gx = std::max({0.0, s.minX - t.maxX, t.minX - s.maxX});
+  const double gy = std::max({0.0, s.minY - t.maxY, t.minY - s.maxY});
+  const double gz = std::max({0.0, s.minZ - t.maxZ, t.minZ - s.maxZ});
+  return std::sqrt(gx * gx + gy * gy + gz * gz);
+}
+
+/// Fills the grid-frame box of a slab triangle from its corners (A frame).
+void frameBox(SlabTriangle& s, const Vec3& ex, const Vec3& ey, const Vec3& ez) {
+  double x[3], y[3], z[3];
+  for (int k = 0; k < 3; ++k) {
+    x[k] = ex.dot(s.corner[k]);
+    y[k] = ey.dot(s.corner[k]);
+    z[k] = ez.dot(s.corner[k]);
+  }
+  s.minX = std::min({x[0], x[1], x[2]});
+  s.maxX = std::max({x[0], x[1], x[2]});
+  s.minY = std::min({y[0], y[1], y[2]});
+  s.maxY = std::max({y[0], y[1], y[2]});
+  s.minZ = std::min({z[0], z[1], z[2]});
+  s.maxZ = std::max({z[0], z[1], z[2]});
+}
+
+}  // namespace
+
+void Query::testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb) {
+  // Box bound first: pairs that cannot beat the global upper bound are dropped without the exact
+  // test (the dropped bound is recorded by skip() for the interval).
+  if (skip(boxDistance(ta, tb) - roundoff_)) return;
+  const TrianglePairResult t =
+      triangleDistance(ta.corner[0], ta.corner[1], ta.corner[2], tb.corner[0], tb.corner[1], tb.corner[2]);
+  ++counters_.trianglePairsTested;
+  offer(t.pointOnA, t.pointOnB, t.distance, ta.triangle, false, tb.triangle, false);
+}
+
+void Query::hashStage(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1, const GjkResult& g) {
+  // Sec. 5.1: the grid frame. z along the separating direction n (A towards B), x and y span
+  // the separating plane.
+  const Vec3 ez = g.direction;
+  const Vec3 ex = ez.unitOrthogonal();
+  const Vec3 ey = ez.cross(ex);
+  const double lower = g.minB - g.maxA;
+  const double upper = geometricBound();
+  if (!std::isfinite(upper)) {
+    testAllPairs(a0, a1, b0, b1);
+    return;
+  }
+
+  // Sec. 5.2, eq. (1): a point of A below maxA - (U - L), or of B above minB + (U - L), is farther
+  // than U from the other mesh (the other mesh lies wholly beyond its support plane). The slab
+  // spans c_z = 2U - L. Widened by the roundoff allowance so that rounding never culls a pair.
+  const double reach = upper - lower + roundoff_;
+  const double slabLowA = g.maxA - reach;
+  const double slabHighB = g.minB + reach;
+
+  // First culling (Fig. 2, 1.): only triangles reaching into the slab are kept.
+  std::vector<SlabTriangle>& slabA = buf_.slabA;
+  std::vector<SlabTriangle>& slabB = buf_.slabB;
+  slabA.clear();
+  slabB.clear();
+  const std::vector<TriangleIndices>& trisA = a_.triangles();
+  for (std::uint32_t i = a0; i < a1; ++i) {
+    const std::uint32_t t = buf_.orderA[i];
+    const Vec3& p0 = a_.vertices()[trisA[t][0]];
+    const Vec3& p1 = a_.vertices()[trisA[t][1]];
+    const Vec3& p2 = a_.vertices()[trisA[t][2]];
+    if (std::max({ez.dot(p0), ez.dot(p1), ez.dot(p2)}) < slabLowA) continue;
+    SlabTriangle s;
+    s.corner[0] = p0;
+    s.corner[1] = p1;
+    s.corner[2] = p2;
+    s.triangle = t;
+    frameBox(s, ex, ey, ez);
+    slabA.push_back(s);
+  }
+  const Vec3 ezInB = rotationAB_ * ez;
+  const double offsetB = ez.dot(translationBA_);
+  const std::vector<TriangleIndices>& trisB = b_.triangles();
+  for (std::uint32_t i = b0; i < b1; ++i) {
+    const std::uint32_t t = buf_.orderB[i];
+    const Vec3& q0 = b_.vertices()[trisB[t][0]];
+    const Vec3& q1 = b_.vertices()[trisB[t][1]];
+    const Vec3& q2 = b_.vertices()[trisB[t][2]];
+    if (std::min({ezInB.dot(q0), ezInB.dot(q1), ezInB.dot(q2)}) + offsetB > slabHighB) continue;
+    SlabTriangle s;
+    s.corner[0] = toA(q0);
+    s.corner[1] = toA(q1);
+    s.corner[2] = toA(q2);
+    s.triangle = t;
+    frameBox(s, ex, ey, ez);
+    slabB.push_back(s);
+  }
+  counters_.trianglesHashed += slabA.size() + slabB.size();
+  if (upper < best_) minSkippedLower_ = std::min(minSkippedLower_, upper);  // what the slab culled is beyond it
+  if (slabA.empty() || slabB.empty()) return;
+
+  // Nearest to the separating plane first: the global upper bound falls fastest that way, and
+  // with it the box bound prunes more of what follows.
+  std::sort(slabB.begin(), slabB.end(), [](const SlabTriangle& s, const SlabTriangle& t) { return s.minZ < t.minZ; });
+
+  const std::size_t pairs = slabA.size() * slabB.size();
+  if (pairs <= static_cast<std::size_t>(tolerance::kHashMinPairs)) {
+    for (const SlabTriangle& tb : slabB) {
+      for (const SlabTriangle& ta : slabA) {
+        if (done_) return;
+        testSlabPair(ta, tb);
+      }
+    }
+    return;
+  }
+
+  // Eq. (3), taken over every pair rather than the support pair: points closer than U whose z
+  // differ by at least L differ in the plane by at most sqrt(U^2 - L^2). Any larger cell is also
+  // correct; the cell grows to the mean triangle size (so that a triangle covers few cells) and to
+  // the span / kMaxCellsPerAxis (so that indices stay small).
+  const double lowerSafe = std::max(0.0, lower - roundoff_);
+  double cell = std::sqrt(std::max(0.0, upper * upper - lowerSafe * lowerSafe)) + roundoff_;
+  double minX = slabA[0].minX, maxX = slabA[0].maxX, minY = slabA[0].minY, maxY = slabA[0].maxY;
+  double meanSize = 0.0;
+  for (const SlabTriangle& s : slabA) {
+    minX = std::min(minX, s.minX);
+    maxX = std::max(maxX, s.maxX);
+    minY = std::min(minY, s.minY);
+    maxY = std::max(maxY, s.maxY);
+    meanSize += std::max(s.maxX - s.minX, s.maxY - s.minY);
+  }
+  meanSize /= static_cast<double>(slabA.size());
+  cell = std::max({cell, meanSize, (maxX - minX) / tolerance::kMaxCellsPerAxis,
+                   (maxY - minY) / tolerance::kMaxCellsPerAxis});
+  if (!(cell > 0.0)) cell = std::max(1.0, magnitude_);  // every slab triangle is a point at one spot
+  const double inv = 1.0 / cell;
+  auto cellX = [&](double x) { return static_cast<std::int64_t>(std::floor((x - minX) * inv)); };
+  auto cellY = [&](double y) { return static_cast<std::int64_t>(std::floor((y - minY) * inv)); };
+
+  // Build the table (counting sort into buckets, no allocation once warm). Oversized triangles
+  // stay out of it and meet every B triangle directly.
+  std::uint32_t entries = 0;
+  buf_.bigA.clear();
+  for (std::uint32_t i = 0; i < slabA.size(); ++i) {
+    const SlabTriangle& s = slabA[i];
+    const std::int64_t cells = (cellX(s.maxX) - cellX(s.minX) + 1) * (cellY(s.maxY) - cellY(s.minY) + 1);
+    if (cells > tolerance::kMaxCellsPerTriangle) {
+      buf_.bigA.push_back(i);
+    } else {
+      entries += static_cast<std::uint32_t>(cells);
+    }
+  }
+  std::uint32_t tableSize = 16;
+  while (tableSize < 2 * entries) tableSize <<= 1;
+  const std::uint32_t mask = tableSize - 1;
+  buf_.bucketStart.assign(tableSize + 1, 0);
+  buf_.entryBucket.resize(entries);
+  buf_.bucketEntries.resize(entries);
+  std::uint32_t e = 0;
+  std::size_t nextBig = 0;
+  for (std::uint32_t i = 0; i < slabA.size(); ++i) {
+    if (nextBig < buf_.bigA.size() && buf_.bigA[nextBig] == i) {
+      ++nextBig;
+      continue;
+    }
+    const SlabTriangle& s = slabA[i];
+    for (std::int64_t ix = cellX(s.minX); ix <= cellX(s.maxX); ++ix) {
+      for (std::int64_t iy = cellY(s.minY); iy <= cellY(s.maxY); ++iy) {
+        const std::uint32_t h = cellHash(ix, iy, mask);
+        buf_.entryBucket[e++] = h;
+        ++buf_.bucketStart[h + 1];
+      }
+    }
+  }
+  for (std::uint32_t h = 0; h < tableSize; ++h) buf_.bucketStart[h + 1] += buf_.bucketStart[h];
+  {
+    // Scatter: walk the entries again in the same order, placing each slab index in its bucket.
+    std::vector<std::uint32_t>& cursor = buf_.lastVisitor;  // reused as the fill cursor
+    cursor.assign(buf_.bucketStart.begin(), buf_.bucketStart.end() - 1);
+    e = 0;
+    nextBig = 0;
+    for (std::uint32_t i = 0; i < slabA.size(); ++i) {
+      if (nextBig < buf_.bigA.size() && buf_.bigA[nextBig] == i) {
+        ++nextBig;
+        continue;
+      }
+      const SlabTriangle& s = slabA[i];
+      const std::int64_t cells = (cellX(s.maxX) - cellX(s.minX) + 1) * (cellY(s.maxY) - cellY(s.minY) + 1);
+      for (std::int64_t k = 0; k < cells; ++k) buf_.bucketEntries[cursor[buf_.entryBucket[e++]]++] = i;
+    }
+  }
+
+  // Second culling (Fig. 2, 2.): a B triangle meets only the A triangles of the cells its box
+  // covers and their one-ring; each pair once (lastVisitor stamps).
+  buf_.lastVisitor.assign(slabA.size(), 0);
+  for (std::uint32_t j = 0; j < slabB.size(); ++j) {
+    const SlabTriangle& tb = slabB[j];
+    const std::uint32_t stamp = j + 1;
+    for (std::uint32_t i : buf_.bigA) {
+      if (done_) return;
+      testSlabPair(slabA[i], tb);
+    }
+    const std::int64_t x0 = cellX(tb.minX) - 1, x1 = cellX(tb.maxX) + 1;
+    const std::int64_t y0 = cellY(tb.minY) - 1, y1 = cellY(tb.maxY) + 1;
+    if ((x1 - x0 + 1) * (y1 - y0 + 1) > tolerance::kMaxCellsPerTriangle + 8) {
+      // A large B triangle: cheaper to meet every hashed A triangle once than to walk its cells.
+      for (std::uint32_t i = 0; i < slabA.size(); ++i) {
+        if (buf_.lastVisitor[i] == stamp || std::binary_search(buf_.bigA.begin(), buf_.bigA.end(), i)) continue;
+        buf_.lastVisitor[i] = stamp;
+        if (done_) return;
+        testSlabPair(slabA[i], tb);
+      }
+      continue;
+    }
+    for (std::int64_t ix = x0; ix <= x1; ++ix) {
+      for (std::int64_t iy = y0; iy <= y1; ++iy) {
+        const std::uint32_t h = cellHash(ix, iy, mask);
+        for (std::uint32_t k = buf_.bucketStart[h]; k < buf_.bucketStart[h + 1]; ++k) {
+          const std::uint32_t i = buf_.bucketEntries[k];
+          if (buf_.lastVisitor[i] == stamp) continue;
+          buf_.lastVisitor[i] = stamp;
+          if (done_) return;
+          testSlabPair(slabA[i], tb);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace adsd::detail
