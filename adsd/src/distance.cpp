@@ -68,72 +68,79 @@ Query::Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
   roundoff_ = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude_;
 }
 
-SupportPoint Query::supportA(std::uint32_t a0, std::uint32_t a1, const Vec3& d) const {
-  SupportPoint s;
-  double bestValue = -std::numeric_limits<double>::infinity();
+SupportPoint Query::supportA(const SubMesh& a, const Vec3& d) const {
   const std::vector<Vec3>& vertices = a_.vertices();
-  if (a0 == 0 && a1 == a_.triangleCount() && a_.allVerticesReferenced()) {
-    // Whole mesh: each vertex once instead of each corner of each triangle.
-    for (std::uint32_t v = 0; v < vertices.size(); ++v) {
-      const double value = d.dot(vertices[v]);
-      if (value > bestValue) {
-        bestValue = value;
-        s.feature = v;
-      }
-    }
-    s.isVertex = true;
-    s.point = vertices[s.feature];
-    return s;
-  }
-  std::uint32_t bestVertex = 0;
-  for (std::uint32_t i = a0; i < a1; ++i) {
-    const std::uint32_t t = buf_.orderA[i];
-    for (std::uint32_t v : a_.triangles()[t]) {
-      const double value = d.dot(vertices[v]);
-      if (value > bestValue) {
-        bestValue = value;
-        s.feature = t;
-        bestVertex = v;
-      }
+  double bestValue = -std::numeric_limits<double>::infinity();
+  std::uint32_t bestVertex = buf_.verticesA[a.v0];
+  for (std::uint32_t i = a.v0; i < a.v1; ++i) {
+    const std::uint32_t v = buf_.verticesA[i];
+    const double value = d.dot(vertices[v]);
+    if (value > bestValue) {
+      bestValue = value;
+      bestVertex = v;
     }
   }
+  SupportPoint s;
   s.point = vertices[bestVertex];
+  s.feature = bestVertex;
+  s.isVertex = true;
   return s;
 }
 
-SupportPoint Query::supportB(std::uint32_t b0, std::uint32_t b1, const Vec3& dInA) const {
-  // Support in B's own frame with the direction rotated into it (no vertex is transformed but
-  // the winner).
+SupportPoint Query::supportB(const SubMesh& b, const Vec3& dInA) const {
+  // Support in B's own frame with the direction rotated into it: no vertex is transformed but
+  // the winner.
   const Vec3 d = rotationAB_ * dInA;
-  SupportPoint s;
-  double bestValue = -std::numeric_limits<double>::infinity();
   const std::vector<Vec3>& vertices = b_.vertices();
-  std::uint32_t bestVertex = 0;
-  if (b0 == 0 && b1 == b_.triangleCount() && b_.allVerticesReferenced()) {
-    for (std::uint32_t v = 0; v < vertices.size(); ++v) {
-      const double value = d.dot(vertices[v]);
-      if (value > bestValue) {
-        bestValue = value;
-        bestVertex = v;
-      }
+  double bestValue = -std::numeric_limits<double>::infinity();
+  std::uint32_t bestVertex = buf_.verticesB[b.v0];
+  for (std::uint32_t i = b.v0; i < b.v1; ++i) {
+    const std::uint32_t v = buf_.verticesB[i];
+    const double value = d.dot(vertices[v]);
+    if (value > bestValue) {
+      bestValue = value;
+      bestVertex = v;
     }
-    s.isVertex = true;
-    s.feature = bestVertex;
-  } else {
-    for (std::uint32_t i = b0; i < b1; ++i) {
-      const std::uint32_t t = buf_.orderB[i];
-      for (std::uint32_t v : b_.triangles()[t]) {
-        const double value = d.dot(vertices[v]);
-        if (value > bestValue) {
-          bestValue = value;
-          s.feature = t;
-          bestVertex = v;
-        }
+  }
+  SupportPoint s;
+  s.point = toA(vertices[bestVertex]);
+  s.feature = bestVertex;
+  s.isVertex = true;
+  return s;
+}
+
+SubMesh Query::collectVertices(const Mesh& mesh, const std::vector<std::uint32_t>& order, std::uint32_t t0,
+                               std::uint32_t t1, std::vector<std::uint32_t>& list, std::vector<std::uint32_t>& marks,
+                               std::uint32_t mark) {
+  SubMesh s{t0, t1, static_cast<std::uint32_t>(list.size()), 0};
+  for (std::uint32_t i = t0; i < t1; ++i) {
+    for (std::uint32_t v : mesh.triangles()[order[i]]) {
+      if (marks[v] != mark) {
+        marks[v] = mark;
+        list.push_back(v);
       }
     }
   }
-  s.point = toA(vertices[bestVertex]);
+  s.v1 = static_cast<std::uint32_t>(list.size());
   return s;
+}
+
+void Query::projectA(const SubMesh& a, const Vec3& n) {
+  const std::vector<Vec3>& vertices = a_.vertices();
+  for (std::uint32_t i = a.v0; i < a.v1; ++i) {
+    const std::uint32_t v = buf_.verticesA[i];
+    buf_.projectionA[v] = n.dot(vertices[v]);
+  }
+}
+
+void Query::projectB(const SubMesh& b, const Vec3& n) {
+  const Vec3 nInB = rotationAB_ * n;
+  const double offset = n.dot(translationBA_);
+  const std::vector<Vec3>& vertices = b_.vertices();
+  for (std::uint32_t i = b.v0; i < b.v1; ++i) {
+    const std::uint32_t v = buf_.verticesB[i];
+    buf_.projectionB[v] = nInB.dot(vertices[v]) + offset;
+  }
 }
 
 bool Query::skip(double lowerSafe) {
@@ -202,10 +209,23 @@ DistanceResult Query::run() {
   buf_.highA.resize(nA);
   buf_.lowB.resize(nB);
   buf_.highB.resize(nB);
+  buf_.projectionA.resize(a_.vertices().size());
+  buf_.projectionB.resize(b_.vertices().size());
+  buf_.verticesA.clear();
+  buf_.verticesB.clear();
+  if (buf_.vertexMarkA.size() < a_.vertices().size() || buf_.vertexMarkB.size() < b_.vertices().size() ||
+      buf_.mark > UINT32_MAX - 4 * (nA + nB)) {
+    // A new mesh size, or the marks could wrap during this query: start them afresh.
+    buf_.vertexMarkA.assign(std::max(buf_.vertexMarkA.size(), a_.vertices().size()), 0);
+    buf_.vertexMarkB.assign(std::max(buf_.vertexMarkB.size(), b_.vertices().size()), 0);
+    buf_.mark = 0;
+  }
+  const SubMesh rootA = collectVertices(a_, buf_.orderA, 0, nA, buf_.verticesA, buf_.vertexMarkA, ++buf_.mark);
+  const SubMesh rootB = collectVertices(b_, buf_.orderB, 0, nB, buf_.verticesB, buf_.vertexMarkB, ++buf_.mark);
 
   // First search vector: from a corner of B to a corner of A (any non-zero guess of a - b).
   const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
-  visit(0, nA, 0, nB, 0, start);
+  visit(rootA, rootB, 0, start);
 
   DistanceResult r;
   r.counters = counters_;

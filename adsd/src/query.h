@@ -26,6 +26,13 @@ struct DistanceScratch::Buffers {
   // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
   // them in place (depth first, so a range holds the same set whenever it is revisited).
   std::vector<std::uint32_t> orderA, orderB;
+  // Each sub-mesh's distinct vertices, kept on a stack (a child's list lives while its parent's
+  // visit runs): supports scan each vertex once instead of every corner of every triangle.
+  std::vector<std::uint32_t> verticesA, verticesB;
+  std::vector<std::uint32_t> vertexMarkA, vertexMarkB;  // per vertex: last list it was added to
+  std::uint32_t mark = 0;
+  // Per vertex, its projection on the current split or slab direction.
+  std::vector<double> projectionA, projectionB;
   // Per triangle, its corners' extent along the current split direction.
   std::vector<double> lowA, highA, lowB, highB;
   // Stage two.
@@ -39,6 +46,12 @@ struct DistanceScratch::Buffers {
 
 namespace detail {
 
+/// A sub-mesh: triangles order[t0, t1) and their distinct vertices vertices[v0, v1).
+struct SubMesh {
+  std::uint32_t t0, t1, v0, v1;
+  std::uint32_t triangles() const { return t1 - t0; }
+};
+
 class Query {
  public:
   Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB, const DistanceOptions& options,
@@ -49,15 +62,22 @@ class Query {
 
  private:
   // --- stage three and the recursion (decomposition.cpp) ---
-  void visit(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1, int depth, const Vec3& hint);
-  void testAllPairs(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1);
+  void visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hint);
+  void testAllPairs(const SubMesh& a, const SubMesh& b);
+  /// Appends the distinct vertices of triangles order[t0, t1) to `list`; returns the sub-mesh.
+  static SubMesh collectVertices(const Mesh& mesh, const std::vector<std::uint32_t>& order, std::uint32_t t0,
+                                 std::uint32_t t1, std::vector<std::uint32_t>& list,
+                                 std::vector<std::uint32_t>& marks, std::uint32_t mark);
+  /// Projections of a sub-mesh's vertices on direction n (A frame): into projectionA / projectionB.
+  void projectA(const SubMesh& a, const Vec3& n);
+  void projectB(const SubMesh& b, const Vec3& n);
   // --- stage two (spatial_hash.cpp) ---
-  void hashStage(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1, const GjkResult& g);
+  void hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g);
   void testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb);
 
-  // --- supports (eq. 4-5) over a sub-mesh range, in mesh A's frame ---
-  SupportPoint supportA(std::uint32_t a0, std::uint32_t a1, const Vec3& d) const;
-  SupportPoint supportB(std::uint32_t b0, std::uint32_t b1, const Vec3& d) const;
+  // --- supports (eq. 4-5) over a sub-mesh's vertices, in mesh A's frame ---
+  SupportPoint supportA(const SubMesh& a, const Vec3& d) const;
+  SupportPoint supportB(const SubMesh& b, const Vec3& d) const;
 
   // --- the mode's rules ---
   /// May a pair (of sub-meshes or triangles) whose distance is at least `lowerSafe` be dropped?

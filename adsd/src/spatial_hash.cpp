@@ -53,7 +53,7 @@ void Query::testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb) {
   offer(t.pointOnA, t.pointOnB, t.distance, ta.triangle, false, tb.triangle, false);
 }
 
-void Query::hashStage(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std::uint32_t b1, const GjkResult& g) {
+void Query::hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g) {
   // Sec. 5.1: the grid frame. z along the separating direction n (A towards B), x and y span
   // the separating plane.
   const Vec3 ez = g.direction;
@@ -62,7 +62,7 @@ void Query::hashStage(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std:
   const double lower = g.minB - g.maxA;
   const double upper = geometricBound();
   if (!std::isfinite(upper)) {
-    testAllPairs(a0, a1, b0, b1);
+    testAllPairs(a, b);
     return;
   }
 
@@ -78,34 +78,24 @@ void Query::hashStage(std::uint32_t a0, std::uint32_t a1, std::uint32_t b0, std:
   std::vector<SlabTriangle>& slabB = buf_.slabB;
   slabA.clear();
   slabB.clear();
-  const std::vector<TriangleIndices>& trisA = a_.triangles();
-  for (std::uint32_t i = a0; i < a1; ++i) {
+  projectA(a, ez);
+  projectB(b, ez);
+  for (std::uint32_t i = a.t0; i < a.t1; ++i) {
     const std::uint32_t t = buf_.orderA[i];
-    const Vec3& p0 = a_.vertices()[trisA[t][0]];
-    const Vec3& p1 = a_.vertices()[trisA[t][1]];
-    const Vec3& p2 = a_.vertices()[trisA[t][2]];
-    if (std::max({ez.dot(p0), ez.dot(p1), ez.dot(p2)}) < slabLowA) continue;
+    const TriangleIndices& tri = a_.triangles()[t];
+    if (std::max({buf_.projectionA[tri[0]], buf_.projectionA[tri[1]], buf_.projectionA[tri[2]]}) < slabLowA) continue;
     SlabTriangle s;
-    s.corner[0] = p0;
-    s.corner[1] = p1;
-    s.corner[2] = p2;
+    for (int k = 0; k < 3; ++k) s.corner[k] = a_.vertices()[tri[k]];
     s.triangle = t;
     frameBox(s, ex, ey, ez);
     slabA.push_back(s);
   }
-  const Vec3 ezInB = rotationAB_ * ez;
-  const double offsetB = ez.dot(translationBA_);
-  const std::vector<TriangleIndices>& trisB = b_.triangles();
-  for (std::uint32_t i = b0; i < b1; ++i) {
+  for (std::uint32_t i = b.t0; i < b.t1; ++i) {
     const std::uint32_t t = buf_.orderB[i];
-    const Vec3& q0 = b_.vertices()[trisB[t][0]];
-    const Vec3& q1 = b_.vertices()[trisB[t][1]];
-    const Vec3& q2 = b_.vertices()[trisB[t][2]];
-    if (std::min({ezInB.dot(q0), ezInB.dot(q1), ezInB.dot(q2)}) + offsetB > slabHighB) continue;
+    const TriangleIndices& tri = b_.triangles()[t];
+    if (std::min({buf_.projectionB[tri[0]], buf_.projectionB[tri[1]], buf_.projectionB[tri[2]]}) > slabHighB) continue;
     SlabTriangle s;
-    s.corner[0] = toA(q0);
-    s.corner[1] = toA(q1);
-    s.corner[2] = toA(q2);
+    for (int k = 0; k < 3; ++k) s.corner[k] = toA(b_.vertices()[tri[k]]);
     s.triangle = t;
     frameBox(s, ex, ey, ez);
     slabB.push_back(s);
