@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs what adsd needs on a fresh Debian 12 machine (as root, or through sudo), and nothing
+# when it is all there already. Used by the README's two commands and by CI.
+#
+#   cmake/install-debian-deps.sh
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git ca-certificates
+  libeigen3-dev libassimp-dev assimp-utils
+  libompl-dev ompl-demos
+  # OMPL's CMake config names these libraries without depending on their -dev packages.
+  libboost-serialization-dev libboost-filesystem-dev libboost-system-dev libboost-program-options-dev
+  libgtest-dev libbenchmark-dev libfcl-dev
+  # Sanitizer and fuzzing builds (issue 7), plots, sharded benchmarks, fetching real meshes.
+  clang libclang-rt-14-dev python3-matplotlib parallel npm sqlite3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-debian-deps: everything is installed"
+  exit 0
+fi
+
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "install-debian-deps: error: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+echo "install-debian-deps: installing ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-debian-deps: done"
