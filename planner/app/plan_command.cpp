@@ -46,7 +46,7 @@ PlanArguments parseArguments(const std::vector<std::string>& args) {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     const auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw InputError("adsd plan: " + arg + " needs a value");
+      if (i + 1 >= args.size()) throw InputError(arg + " needs a value");
       return args[++i];
     };
     if (arg == "--planner") {
@@ -56,7 +56,7 @@ PlanArguments parseArguments(const std::vector<std::string>& args) {
       char* end = nullptr;
       const double s = std::strtod(v.c_str(), &end);
       if (end != v.c_str() + v.size() || !(s > 0.0) || !(s < 1e7)) {
-        throw InputError("adsd plan: --time: expected seconds > 0, got '" + v + "'");
+        throw InputError("--time: expected seconds > 0, got '" + v + "'");
       }
       a.seconds = s;
     } else if (arg == "--objective") {
@@ -66,7 +66,7 @@ PlanArguments parseArguments(const std::vector<std::string>& args) {
       } else if (v == "clearance") {
         a.objective = ObjectiveKind::maxMinClearance;
       } else {
-        throw InputError("adsd plan: --objective: expected length or clearance, got '" + v + "'");
+        throw InputError("--objective: expected length or clearance, got '" + v + "'");
       }
     } else if (arg == "--checker") {
       const std::string& v = value();
@@ -75,7 +75,7 @@ PlanArguments parseArguments(const std::vector<std::string>& args) {
       } else if (v == "fcl") {
         a.checker = CheckerKind::fcl;
       } else {
-        throw InputError("adsd plan: --checker: expected adsd or fcl, got '" + v + "'");
+        throw InputError("--checker: expected adsd or fcl, got '" + v + "'");
       }
     } else if (arg == "--motion") {
       const std::string& v = value();
@@ -84,16 +84,16 @@ PlanArguments parseArguments(const std::vector<std::string>& args) {
       } else if (v == "certified") {
         a.motion = MotionKind::certified;
       } else {
-        throw InputError("adsd plan: --motion: expected discrete or certified, got '" + v + "'");
+        throw InputError("--motion: expected discrete or certified, got '" + v + "'");
       }
     } else if (arg == "--path") {
       a.pathFile = value();
     } else if (!arg.empty() && arg[0] == '-') {
-      throw InputError("adsd plan: unknown option '" + arg + "'");
+      throw InputError("unknown option '" + arg + "'");
     } else if (a.problem.empty()) {
       a.problem = arg;
     } else {
-      throw InputError("adsd plan: more than one problem file ('" + a.problem + "', '" + arg + "')");
+      throw InputError("more than one problem file ('" + a.problem + "', '" + arg + "')");
     }
   }
   if (a.problem.empty()) a.problem = defaultProblemFile();
@@ -127,7 +127,7 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   if (!planner) {
     std::string known;
     for (const std::string& n : knownPlannerNames()) known += (known.empty() ? "" : ", ") + n;
-    throw InputError("adsd plan: --planner: no planner named '" + chosen + "' (known: " + known + ")");
+    throw InputError("--planner: no planner named '" + chosen + "' (known: " + known + ")");
   }
   if (entry != nullptr) {
     for (const Setting& s : entry->parameters) {

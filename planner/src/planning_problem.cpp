@@ -1,6 +1,7 @@
 #include "adsd/planner/planning_problem.h"
 
 #include <filesystem>
+#include <sstream>
 
 #include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
@@ -168,9 +169,10 @@ void PlanningProblem::build(const Pose& start, const Pose& goal, const std::opti
     const std::string which = isStart ? "the start state" : "the goal state";
     if (!si->satisfiesBounds(s)) throw InputError(describeOr(file, isStart) + ": " + which + " is outside the bounds");
     if (!checker_->isValid(s)) {
-      throw InputError(describeOr(file, isStart) + ": " + which + " is in collision (clearance " +
-                       std::to_string(checker_->clearance(s)) + ", safety margin " +
-                       std::to_string(options_.safetyMargin) + ")");
+      std::ostringstream why;
+      why << describeOr(file, isStart) << ": " << which << " is in collision (clearance " << checker_->clearance(s)
+          << ", safety margin " << options_.safetyMargin << ")";
+      throw InputError(why.str());
     }
   }
   setup_->setStartAndGoalStates(startState, goalState, file != nullptr ? file->goalThreshold : 1e-6);

@@ -1,0 +1,134 @@
+// Problems from files: meshes loaded and re-centred, bounds inferred, errors naming the key; and
+// `adsd plan` end to end (exit status 0 solved, 2 bad input, no half-written path file).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <ompl/base/spaces/SE2StateSpace.h>
+
+#include "adsd/error.h"
+#include "adsd/planner/planning_problem.h"
+#include "adsd/problem_scenes.h"
+#include "adsd/shapes.h"
+#include "scratch_dir.h"
+
+namespace adsd::app {
+int planCommand(const std::vector<std::string>& args);
+}
+
+namespace adsd::planner {
+namespace {
+
+using test::ScratchDir;
+
+/// thin_wall.cfg with its meshes, written into \p dir; the robot is written moved off its vertex
+/// mean so that the loader's re-centring is what puts it back. \p extra lines go in [problem].
+std::string writeThinWall(const ScratchDir& dir, const std::string& extra = "",
+                          const std::string& start = "start.x = -2.03\nstart.y = -1\nstart.theta = 0\n") {
+  const shapes::ProblemScene scene = shapes::thinWallScene();
+  Pose offset = Pose::Identity();
+  offset.translate(Vec3(5, -7, 0.25));
+  shapes::writeObj(shapes::merge({scene.robot.front()}, {offset}), dir.path("bar.obj"));
+  shapes::writeObj(scene.environment, dir.path("walls.obj"));
+  return dir.write("thin.cfg", "[problem]\nrobot = bar.obj\nworld = walls.obj\n" + start +
+                                   "goal.x = -2.03\ngoal.y = 3\ngoal.theta = 0\n" + extra);
+}
+
+std::string errorOf(const ProblemFile& file, const CheckingOptions& options = {}) {
+  try {
+    PlanningProblem problem(file, options);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error";
+  return "";
+}
+
+TEST(PlanningProblem, RecentresTheRobotKeepingZForSe2AndInfersBounds) {
+  ScratchDir dir;
+  const ProblemFile file = readProblemFile(writeThinWall(dir));
+  PlanningProblem problem(file, CheckingOptions{});
+  const Mesh& robot = problem.scene().robot.front();
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& v : robot.vertices()) mean += v;
+  mean /= static_cast<double>(robot.vertices().size());
+  EXPECT_NEAR(mean.x(), 0.0, 1e-12);
+  EXPECT_NEAR(mean.y(), 0.0, 1e-12);
+  EXPECT_NEAR(mean.z(), 0.25, 1e-12) << "SE(2): z of the mean is kept";
+  // No volume: the environment's box (the outer walls reach +-4.2). Assimp reads coordinates in
+  // single precision: 4.2 comes back within 2.4e-7 (half a float ulp at 4).
+  const auto* bounds = &problem.spaceInformation()->getStateSpace()->as<ompl::base::SE2StateSpace>()->getBounds();
+  EXPECT_NEAR(bounds->low[0], -4.2, 2.4e-7);
+  EXPECT_NEAR(bounds->high[1], 4.2, 2.4e-7);
+}
+
+TEST(PlanningProblem, RobotFileThatDoesNotExist) {
+  ScratchDir dir;
+  const std::string cfg = writeThinWall(dir);
+  std::filesystem::remove(dir.path("bar.obj"));
+  EXPECT_EQ(errorOf(readProblemFile(cfg)),
+            cfg + ":2: key 'problem.robot': mesh file '" + dir.path("bar.obj") + "' does not exist");
+}
+
+TEST(PlanningProblem, StartInCollisionOrOutsideTheBounds) {
+  ScratchDir dir;
+  const std::string inWall = writeThinWall(dir, "", "start.x = 0\nstart.y = -1\nstart.theta = 0\n");
+  const std::string message = errorOf(readProblemFile(inWall));
+  EXPECT_EQ(message.rfind(inWall + ":4: key 'problem.start.x': the start state is in collision", 0), 0u) << message;
+  const std::string outside = writeThinWall(
+      dir, "volume.min.x = -4\nvolume.min.y = -4\nvolume.max.x = 4\nvolume.max.y = 4\n",
+      "start.x = -5\nstart.y = -1\nstart.theta = 0\n");
+  EXPECT_EQ(errorOf(readProblemFile(outside)), outside + ":4: key 'problem.start.x': the start state is outside the bounds");
+}
+
+TEST(PlanningProblem, SpaceParametersAreAppliedOrReported) {
+  ScratchDir dir;
+  PlanningProblem problem(readProblemFile(writeThinWall(dir, "longest_valid_segment_fraction = 0.002\nfoo = 1\n")),
+                          CheckingOptions{});
+  EXPECT_DOUBLE_EQ(problem.spaceInformation()->getStateSpace()->getLongestValidSegmentFraction(), 0.002);
+  ASSERT_EQ(problem.warnings().size(), 1u);
+  EXPECT_NE(problem.warnings()[0].find(":11: key 'problem.foo'"), std::string::npos) << problem.warnings()[0];
+  const std::string badSampler = writeThinWall(dir, "sampler = clever\n");
+  EXPECT_EQ(errorOf(readProblemFile(badSampler)),
+            badSampler + ":10: key 'problem.sampler': unknown sampler 'clever' (expected uniform, gaussian, "
+                         "obstacle_based, max_clearance or bridge_test)");
+}
+
+TEST(PlanCommand, SolvesWritesThePathAndExitsZero) {
+  ScratchDir dir;
+  const std::string cfg = writeThinWall(dir);
+  const std::string out = dir.path("out.path");
+  EXPECT_EQ(app::planCommand({cfg, "--time", "5", "--motion", "certified", "--path", out}), 0);
+  std::ifstream in(out);
+  std::string line;
+  int lines = 0;
+  while (std::getline(in, line)) {
+    ++lines;
+    std::istringstream values(line);
+    double x, y, yaw;
+    EXPECT_TRUE(values >> x >> y >> yaw) << line;  // SE(2): x y yaw
+  }
+  EXPECT_GE(lines, 2);
+  EXPECT_EQ(app::planCommand({cfg, "--checker", "fcl", "--objective", "clearance", "--planner", "rrtstar", "--time",
+                              "2"}),
+            0);
+}
+
+TEST(PlanCommand, BadInputExitsTwoAndWritesNothing) {
+  ScratchDir dir;
+  const std::string cfg = writeThinWall(dir);
+  const std::string out = dir.path("out.path");
+  EXPECT_EQ(app::planCommand({cfg, "--planner", "teleport", "--path", out}), 2);
+  EXPECT_EQ(app::planCommand({dir.path("missing.cfg"), "--path", out}), 2);
+  EXPECT_EQ(app::planCommand({cfg, "--time", "-1"}), 2);
+  EXPECT_EQ(app::planCommand({cfg, "--checker", "ode"}), 2);
+  EXPECT_EQ(app::planCommand({cfg, "--bogus"}), 2);
+  const std::string inWall = writeThinWall(dir, "", "start.x = 0\nstart.y = -1\nstart.theta = 0\n");
+  EXPECT_EQ(app::planCommand({inWall, "--path", out}), 2);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(out + ".partial"));
+}
+
+}  // namespace
+}  // namespace adsd::planner
