@@ -31,9 +31,9 @@
 #include "adsd/distance.h"
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
-#include "close_poses.h"
+#include "scenes/close_poses.h"
 #include "fcl_models.h"
-#include "mesh_cache.h"
+#include "scenes/mesh_cache.h"
 #include "timing.h"
 
 namespace {

@@ -41,6 +41,29 @@ inline std::shared_ptr<FclObbrssModel> buildObbrss(const std::vector<Vec3>& vert
   return model;
 }
 
+/// \brief FCL's answer for deforming geometry without a rebuild: new vertex positions, then the
+/// existing hierarchy's volumes refitted (same tree topology, volumes refitted to the primitives
+/// below each node).
+///
+/// Top-down, not FCL's default bottom-up: with OBBRSS (and RSS), FCL 0.7's bottom-up refit
+/// merges child volumes into parents that do not contain them; measured on a rippled cow pair in
+/// contact, fcl::distance then returned 0.43 where the rebuilt models (and the oracle) give 0, and
+/// took seconds per query (bench_scenes showed the same on the teddies: 3 of 3 oracle queries
+/// wrong). The top-down refit fits each node to its primitives again and answers correctly.
+inline void refitObbrss(FclObbrssModel& model, const std::vector<Vec3>& vertices) {
+  model.beginUpdateModel();
+  model.updateSubModel(vertices);
+  model.endUpdateModel(/*refit=*/true, /*bottomup=*/false);
+}
+
+/// \brief FCL's boolean collision check (first contact ends it): the validity question.
+inline bool fclCollide(const FclObbrssModel& a, const Pose& poseA, const FclObbrssModel& b, const Pose& poseB) {
+  fcl::CollisionRequestd request;  // one contact suffices for a yes/no answer
+  fcl::CollisionResultd result;
+  fcl::collide(&a, poseA, &b, poseB, request, result);
+  return result.isCollision();
+}
+
 /// \brief FCL's exact mesh–mesh distance: nearest points on, no error allowance (rel_err =
 /// abs_err = 0, the defaults, stated here because they are what makes the comparison fair).
 inline fcl::DistanceResultd fclDistance(const FclObbrssModel& a, const Pose& poseA,

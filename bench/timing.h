@@ -52,8 +52,11 @@ inline double p90(std::vector<double> samples) { return quantile(std::move(sampl
 struct TimedMethod {
   std::string name;
   std::function<void(std::size_t caseIndex)> run;
-  /// Filled by runInterleaved: microseconds per query, round-major
-  /// (micros[round * caseCount + caseIndex]).
+  /// Optional: the cases this method runs on (empty: all). A method too slow for every case
+  /// (FCL rebuilding large deforming meshes) can sample them; its timings then cover only those.
+  std::function<bool(std::size_t caseIndex)> appliesTo;
+  /// Filled by runInterleaved: microseconds per query it ran, in run order (round-major: round r's
+  /// cases follow round r-1's).
   std::vector<double> micros;
 };
 
@@ -63,25 +66,38 @@ struct TimedMethod {
 /// method runs first, second, ... equally often (cache warmth from the previous method is shared
 /// out evenly). Before timing, each method runs untimed on the first \p warmupCases cases:
 /// scratch memory grows, code and data reach the caches.
+///
+/// \p prepare, when given, runs untimed before the methods on each case (and each warm-up case):
+/// the place for work that belongs to the case, not to any method, such as computing a deforming
+/// mesh's vertices for frame i.
 inline void runInterleaved(std::vector<TimedMethod>& methods, std::size_t caseCount, int rounds,
-                           std::size_t warmupCases = 1) {
+                           std::size_t warmupCases = 1,
+                           const std::function<void(std::size_t caseIndex)>& prepare = {}) {
   const std::size_t m = methods.size();
   for (auto& method : methods) {
     method.micros.clear();
     method.micros.reserve(caseCount * static_cast<std::size_t>(std::max(rounds, 0)));
-    for (std::size_t i = 0; i < std::min(warmupCases, caseCount); ++i) method.run(i);
+  }
+  for (std::size_t i = 0; i < std::min(warmupCases, caseCount); ++i) {
+    if (prepare) prepare(i);
+    for (auto& method : methods) {
+      if (!method.appliesTo || method.appliesTo(i)) method.run(i);
+    }
   }
   for (int round = 0; round < rounds; ++round) {
     for (std::size_t i = 0; i < caseCount; ++i) {
+      if (prepare) prepare(i);
       for (std::size_t k = 0; k < m; ++k) {
         TimedMethod& method = methods[(i + static_cast<std::size_t>(round) + k) % m];
+        if (method.appliesTo && !method.appliesTo(i)) continue;
         method.micros.push_back(microsecondsOf([&] { method.run(i); }));
       }
     }
   }
 }
 
-/// \brief Per-case time: the median over rounds of case i's samples (round-major layout above).
+/// \brief Per-case time: the median over rounds of case i's samples (round-major layout above;
+/// only for a method that runs on every case).
 inline std::vector<double> perCaseMedians(const TimedMethod& method, std::size_t caseCount) {
   std::vector<double> out;
   if (caseCount == 0) return out;
