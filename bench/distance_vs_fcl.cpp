@@ -196,19 +196,19 @@ int run(const Options& options) {
                        counters[i] = r.counters;
                        statuses[i] = r.status;
                        ourWitnessError[i] = std::abs((r.witnessA - r.witnessB).norm() - r.distance);
-                     }, {}});
+                     }, {}, {}});
   methods.push_back({"fcl build both OBBRSS + distance", [&](std::size_t i) {
                        const auto a = adsd::bench::buildObbrss(meshA.vertices(), trianglesA);
                        const auto b = adsd::bench::buildObbrss(meshB.vertices(), trianglesB);
                        fclBuilt[i] = adsd::bench::fclDistance(*a, poses[i].a, *b, poses[i].b).min_distance;
-                     }, {}});
+                     }, {}, {}});
   methods.push_back({"fcl prebuilt OBBRSS distance", [&](std::size_t i) {
                        const fcl::DistanceResultd r =
                            adsd::bench::fclDistance(*prebuiltA, poses[i].a, *prebuiltB, poses[i].b);
                        fclPrebuilt[i] = r.min_distance;
                        fclWitnessError[i] =
                            std::abs((r.nearest_points[0] - r.nearest_points[1]).norm() - r.min_distance);
-                     }, {}});
+                     }, {}, {}});
   adsd::bench::runInterleaved(methods, n, options.rounds, /*warmupCases=*/std::min<std::size_t>(n, 3));
 
   const std::vector<double>* answers[] = {&ours, &fclBuilt, &fclPrebuilt};
