@@ -1,0 +1,109 @@
+#include "file_checks.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "adsd/error.h"
+
+namespace adsd::io::detail {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Binary STL layout: an 80-byte free-form header, a little-endian uint32 triangle count, then 50
+// bytes per triangle (normal, three corners as 12 float32, a 2-byte attribute).
+constexpr std::uintmax_t kStlHeaderBytes = 80;
+constexpr std::uintmax_t kStlPreambleBytes = kStlHeaderBytes + 4;
+constexpr std::uintmax_t kStlBytesPerTriangle = 50;
+// How much of the file decides "ASCII or binary": enough to pass the header and the first facets.
+constexpr std::size_t kStlSniffBytes = 512;
+
+std::string lowerCaseExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// ASCII STL starts with "solid" and is text. A binary STL may also start with "solid" (some
+// exporters write it into the free-form header), but its triangle count (whose high bytes are zero
+// below 2^24 triangles) and float data put control bytes within the first few hundred bytes. Bytes
+// >= 0x80 count as text so that a UTF-8 solid name stays ASCII STL.
+bool looksLikeAsciiStl(std::string_view head) {
+  std::size_t i = 0;
+  while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+  static const char kSolid[] = "solid";
+  for (std::size_t k = 0; k < 5; ++k, ++i) {
+    if (i >= head.size() || std::tolower(static_cast<unsigned char>(head[i])) != kSolid[k]) return false;
+  }
+  return std::all_of(head.begin(), head.end(), [](char ch) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    return c >= 0x20 || std::isspace(c);
+  });
+}
+
+/// The first \p count bytes of the file (fewer if it is shorter).
+std::string readFile(const std::string& path, std::uintmax_t count) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(static_cast<std::size_t>(count), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (in.bad()) throw InputError(path + ": read error");
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  return bytes;
+}
+
+}  // namespace
+
+std::uintmax_t requireReadableFile(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) throw InputError(path + ": no such file");
+  if (ec) throw InputError(path + ": cannot be examined: " + ec.message());
+  if (status.type() == fs::file_type::directory) {
+    throw InputError(path + ": is a directory, not a mesh file");
+  }
+  if (status.type() != fs::file_type::regular) throw InputError(path + ": is not a regular file");
+
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) throw InputError(path + ": cannot be opened for reading: " + std::strerror(errno));
+
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw InputError(path + ": cannot be examined: " + ec.message());
+  if (size == 0) throw InputError(path + ": the file is empty");
+  return size;
+}
+
+void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes) {
+  if (looksLikeAsciiStl(head.substr(0, kStlSniffBytes))) return;
+  if (sizeInBytes < kStlPreambleBytes || head.size() < kStlPreambleBytes) {
+    throw InputError(path + ": truncated binary STL: " + std::to_string(sizeInBytes) +
+                     " bytes, shorter than the " + std::to_string(kStlPreambleBytes) +
+                     "-byte header and triangle count");
+  }
+  std::uint32_t promised = 0;
+  for (int b = 3; b >= 0; --b) {
+    promised = promised << 8 | static_cast<unsigned char>(head[kStlHeaderBytes + static_cast<std::size_t>(b)]);
+  }
+  const std::uintmax_t needed = kStlPreambleBytes + kStlBytesPerTriangle * promised;
+  if (sizeInBytes < needed) {
+    throw InputError(path + ": truncated binary STL: the header promises " + std::to_string(promised) +
+                     " triangles (" + std::to_string(needed) + " bytes) but the file has " +
+                     std::to_string(sizeInBytes) + " bytes");
+  }
+}
+
+void checkBeforeAssimp(const std::string& path) {
+  const std::uintmax_t size = requireReadableFile(path);
+  const std::string ext = lowerCaseExtension(path);
+  if (ext == ".stl") requireCompleteBinaryStl(path, readFile(path, std::min<std::uintmax_t>(size, kStlSniffBytes)), size);
+  if (ext == ".off") requireConsistentOff(path, readFile(path, size));
+  if (ext == ".ply") requireConsistentPly(path, readFile(path, size));
+}
+
+}  // namespace adsd::io::detail

@@ -1,0 +1,208 @@
+#include "adsd/io/load_mesh.h"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <new>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "adsd/error.h"
+#include "file_checks.h"
+
+namespace adsd::io {
+
+namespace {
+
+/// A node transform must be affine: assimp (and we) apply only its upper 3x4 part, so a bottom row
+/// other than (0 0 0 1) would be silently ignored. Assimp stores matrices in float, and composes
+/// some (COLLADA's transform stacks) itself, so allow float rounding: 1e-6, dimensionless.
+constexpr double kAffineBottomRowTolerance = 1e-6;
+
+using Affine = Eigen::Affine3d;
+
+Affine toAffine(const aiMatrix4x4& m, const std::string& path, const aiNode& node) {
+  const double entries[4][4] = {{m.a1, m.a2, m.a3, m.a4},
+                                {m.b1, m.b2, m.b3, m.b4},
+                                {m.c1, m.c2, m.c3, m.c4},
+                                {m.d1, m.d2, m.d3, m.d4}};
+  Eigen::Matrix4d matrix;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) matrix(r, c) = entries[r][c];
+  }
+  const std::string nodeName = "node '" + std::string(node.mName.C_Str()) + "'";
+  if (!matrix.allFinite()) throw InputError(path + ": " + nodeName + " has a non-finite transform entry");
+  if ((matrix.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > kAffineBottomRowTolerance) {
+    throw InputError(path + ": " + nodeName + " has a projective transform (bottom row is not 0 0 0 1)");
+  }
+  Affine affine = Affine::Identity();
+  affine.matrix().topRows<3>() = matrix.topRows<3>();
+  return affine;
+}
+
+std::string oneLine(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+std::string formatPoint(const aiVector3D& p) {
+  std::ostringstream out;
+  out << '(' << p.x << ", " << p.y << ", " << p.z << ')';
+  return out.str();
+}
+
+/// Triangles gathered from the node tree, in the file's root frame.
+struct Gathered {
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+  std::uint64_t lines = 0;
+  std::uint64_t points = 0;
+};
+
+/// Appends the triangles of \p mesh, placed by \p toRoot, to \p out. Assimp's validation step has
+/// already checked the indices; they are checked again here because reading out of range would be
+/// a crash, not an error message.
+void gatherMesh(const aiMesh& mesh, const Affine& toRoot, const std::string& path, Gathered& out) {
+  const std::string meshName = "mesh '" + std::string(mesh.mName.C_Str()) + "'";
+  std::uint64_t triangleFaces = 0;
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    const unsigned n = mesh.mFaces[f].mNumIndices;
+    if (n == 3) ++triangleFaces;
+    else if (n == 2) ++out.lines;
+    else if (n == 1) ++out.points;
+  }
+  if (triangleFaces == 0) return;  // a line or point set: dropped, as documented
+
+  const std::uint64_t base = out.vertices.size();
+  if (base + mesh.mNumVertices > std::numeric_limits<std::uint32_t>::max()) {
+    throw InputError(path + ": more than 2^32 - 1 vertices");
+  }
+  for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+    const aiVector3D& p = mesh.mVertices[v];
+    const Vec3 world = toRoot * Vec3(p.x, p.y, p.z);
+    if (!world.allFinite()) {
+      throw InputError(path + ": " + meshName + " has a vertex with a non-finite coordinate " +
+                       formatPoint(p) + (Vec3(p.x, p.y, p.z).allFinite() ? " after its node transform" : ""));
+    }
+    out.vertices.push_back(world);
+  }
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    const aiFace& face = mesh.mFaces[f];
+    if (face.mNumIndices != 3) continue;
+    TriangleIndices triangle;
+    for (int k = 0; k < 3; ++k) {
+      if (face.mIndices[k] >= mesh.mNumVertices) {
+        throw InputError(path + ": " + meshName + " face " + std::to_string(f) + " refers to vertex " +
+                         std::to_string(face.mIndices[k]) + " but the mesh has " +
+                         std::to_string(mesh.mNumVertices) + " vertices");
+      }
+      triangle[k] = static_cast<std::uint32_t>(base + face.mIndices[k]);
+    }
+    out.triangles.push_back(triangle);
+  }
+}
+
+/// Walks the node tree with an explicit stack (a deep tree from a hostile file must not overflow
+/// the call stack), composing transforms from the root down: p_root = T_root ... T_parent T_node p.
+/// A mesh referenced by several nodes is placed once per reference, as the scene shows it.
+Gathered gatherScene(const aiScene& scene, const std::string& path) {
+  Gathered out;
+  std::vector<std::pair<const aiNode*, Affine>> pending;
+  pending.emplace_back(scene.mRootNode, toAffine(scene.mRootNode->mTransformation, path, *scene.mRootNode));
+  while (!pending.empty()) {
+    const auto [node, toRoot] = pending.back();
+    pending.pop_back();
+    for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+      const unsigned m = node->mMeshes[i];
+      if (m >= scene.mNumMeshes || scene.mMeshes[m] == nullptr) {
+        throw InputError(path + ": node '" + std::string(node->mName.C_Str()) + "' refers to mesh " +
+                         std::to_string(m) + " which does not exist");
+      }
+      gatherMesh(*scene.mMeshes[m], toRoot, path, out);
+    }
+    for (unsigned c = 0; c < node->mNumChildren; ++c) {
+      const aiNode* child = node->mChildren[c];
+      if (child == nullptr) continue;
+      pending.emplace_back(child, toRoot * toAffine(child->mTransformation, path, *child));
+    }
+  }
+  return out;
+}
+
+/// Faces with at least three corners in the scene as the loader produced it, before
+/// post-processing (which assimp's validation would abort for a scene without meshes).
+std::uint64_t countSurfaceFaces(const aiScene& scene, std::uint64_t& lines, std::uint64_t& points) {
+  std::uint64_t surfaces = 0;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* mesh = scene.mMeshes == nullptr ? nullptr : scene.mMeshes[m];
+    if (mesh == nullptr || mesh->mFaces == nullptr) continue;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const unsigned n = mesh->mFaces[f].mNumIndices;
+      if (n >= 3) ++surfaces;
+      else if (n == 2) ++lines;
+      else if (n == 1) ++points;
+    }
+  }
+  return surfaces;
+}
+
+[[noreturn]] void throwNoTriangles(const std::string& path, std::uint64_t lines, std::uint64_t points) {
+  std::string what = path + ": the file holds no triangles";
+  if (lines + points > 0) {
+    what += " (only " + std::to_string(lines) + " lines and " + std::to_string(points) +
+            " points, which are not surfaces)";
+  }
+  throw InputError(what);
+}
+
+Mesh loadMeshUnguarded(const std::string& path) {
+  detail::checkBeforeAssimp(path);
+
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, 0);
+  if (scene == nullptr) {
+    throw InputError(path + ": cannot be parsed: " + oneLine(importer.GetErrorString()));
+  }
+  std::uint64_t lines = 0, points = 0;
+  if (countSurfaceFaces(*scene, lines, points) == 0) throwNoTriangles(path, lines, points);
+
+  // ValidateDataStructure runs first and rejects inconsistent scenes (indices out of range and
+  // the like) before the other steps read them. Triangulate turns polygons into triangles;
+  // JoinIdenticalVertices shares corners (loaders emit three vertices per face); SortByPType
+  // splits mixed meshes so that lines and points land in meshes of their own, which gatherMesh
+  // drops. Node transforms are applied by our own walk, in double precision, rather than by
+  // PreTransformVertices, which composes them in assimp's float and loses the node names our error
+  // messages use. Assimp's defaults for COLLADA <unit> and <up_axis> stay on: that is the frame
+  // OMPL.app's assimp loading sees too, and problem files written for it must mean the same to us.
+  const unsigned steps = aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                         aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
+  scene = importer.ApplyPostProcessing(steps);
+  if (scene == nullptr) {
+    throw InputError(path + ": cannot be parsed: " + oneLine(importer.GetErrorString()));
+  }
+  if (scene->mRootNode == nullptr) throw InputError(path + ": the file holds no scene nodes");
+
+  Gathered gathered = gatherScene(*scene, path);
+  if (gathered.triangles.empty()) throwNoTriangles(path, gathered.lines, gathered.points);
+  return Mesh(std::move(gathered.vertices), std::move(gathered.triangles), path);
+}
+
+}  // namespace
+
+Mesh loadMesh(const std::string& path) {
+  try {
+    return loadMeshUnguarded(path);
+  } catch (const std::bad_alloc&) {
+    throw InputError(path + ": out of memory while loading the mesh");
+  }
+}
+
+}  // namespace adsd::io

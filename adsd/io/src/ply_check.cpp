@@ -1,0 +1,256 @@
+// The structure check for PLY files, run before assimp reads them.
+//
+// Assimp 5.2's PLY reader loops forever on a header without end_header or with an element line
+// that lacks its count, aborts the process (a failed ai_assert) on a blank line inside ASCII data,
+// and fills short or missing data with whatever comes next. So the header is parsed here, the
+// data is walked instance by instance (ASCII: one instance per line, as PLY writers emit it;
+// binary: record by record, list lengths included), and face indices are checked against the
+// vertex count. Anything off is an error naming the line (ASCII) or the element and instance.
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "adsd/error.h"
+#include "file_checks.h"
+#include "text_scan.h"
+
+namespace adsd::io::detail {
+
+namespace {
+
+enum class Format { ascii, binaryLittleEndian, binaryBigEndian };
+
+struct ScalarType {
+  int bytes = 0;
+  bool isInteger = false;
+  bool isSigned = false;
+};
+
+/// The PLY scalar types, with the sized aliases assimp also accepts. Returns bytes == 0 if unknown.
+ScalarType scalarType(std::string_view name) {
+  if (name == "char" || name == "int8") return {1, true, true};
+  if (name == "uchar" || name == "uint8") return {1, true, false};
+  if (name == "short" || name == "int16") return {2, true, true};
+  if (name == "ushort" || name == "uint16") return {2, true, false};
+  if (name == "int" || name == "int32") return {4, true, true};
+  if (name == "uint" || name == "uint32") return {4, true, false};
+  if (name == "float" || name == "float32") return {4, false, true};
+  if (name == "double" || name == "float64") return {8, false, true};
+  return {};
+}
+
+struct Property {
+  std::string name;
+  bool isList = false;
+  ScalarType countType;  ///< lists only
+  ScalarType valueType;
+};
+
+struct Element {
+  std::string name;
+  long long count = 0;
+  std::vector<Property> properties;
+};
+
+/// The face corner lists whose values are vertex indices.
+bool isVertexIndexList(const Element& element, const Property& property) {
+  return element.name == "face" && property.isList &&
+         (property.name == "vertex_indices" || property.name == "vertex_index");
+}
+
+class PlyChecker {
+ public:
+  PlyChecker(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes), lines_(bytes) {}
+
+  void run() {
+    readHeader();
+    for (const Element& e : elements_) {
+      if (e.name == "vertex") vertexCount_ = e.count;
+    }
+    if (format_ == Format::ascii) {
+      walkAscii();
+    } else {
+      walkBinary();
+    }
+  }
+
+ private:
+  std::string at() const { return path_ + ":" + std::to_string(lines_.lineNumber()) + ": "; }
+
+  void readHeader() {
+    std::string_view line;
+    if (!lines_.next(line) || splitWhitespace(line) != std::vector<std::string_view>{"ply"}) {
+      throw InputError(path_ + ":1: a PLY file starts with the line 'ply'");
+    }
+    bool formatSeen = false;
+    while (true) {
+      if (!lines_.next(line)) throw InputError(path_ + ": the PLY header has no end_header line");
+      const std::vector<std::string_view> t = splitWhitespace(line);
+      if (t.empty() || t[0] == "comment" || t[0] == "obj_info") continue;
+      if (t[0] == "end_header") break;
+      if (t[0] == "format") {
+        if (t.size() != 3 || t[2] != "1.0") throw InputError(at() + "expected 'format <kind> 1.0'");
+        if (t[1] == "ascii") format_ = Format::ascii;
+        else if (t[1] == "binary_little_endian") format_ = Format::binaryLittleEndian;
+        else if (t[1] == "binary_big_endian") format_ = Format::binaryBigEndian;
+        else throw InputError(at() + "unknown PLY format " + quoteToken(t[1]));
+        formatSeen = true;
+      } else if (t[0] == "element") {
+        long long count = -1;
+        if (t.size() != 3 || !parseInteger(t[2], count) || count < 0 || count > UINT32_MAX) {
+          throw InputError(at() + "expected 'element <name> <count>' with a count from 0 to 2^32 - 1");
+        }
+        elements_.push_back({std::string(t[1]), count, {}});
+      } else if (t[0] == "property") {
+        if (elements_.empty()) throw InputError(at() + "a property before any element");
+        Property p;
+        if (t.size() == 5 && t[1] == "list") {
+          p.isList = true;
+          p.countType = scalarType(t[2]);
+          p.valueType = scalarType(t[3]);
+          p.name = std::string(t[4]);
+          if (p.countType.bytes == 0 || !p.countType.isInteger) {
+            throw InputError(at() + "list count type " + quoteToken(t[2]) + " is not an integer type");
+          }
+        } else if (t.size() == 3) {
+          p.valueType = scalarType(t[1]);
+          p.name = std::string(t[2]);
+        } else {
+          throw InputError(at() + "expected 'property <type> <name>' or 'property list <type> <type> <name>'");
+        }
+        if (p.valueType.bytes == 0) throw InputError(at() + "unknown property type in " + quoteToken(line));
+        elements_.back().properties.push_back(p);
+      } else {
+        throw InputError(at() + "unknown PLY header line " + quoteToken(line));
+      }
+    }
+    if (!formatSeen) throw InputError(path_ + ": the PLY header has no format line");
+    dataOffset_ = lines_.offset();
+  }
+
+  void checkIndex(long long index, const Element& e, long long instance) const {
+    if (index < 0 || index >= vertexCount_) {
+      throw InputError(where(e, instance) + " refers to vertex " + std::to_string(index) + " but the file has " +
+                       std::to_string(vertexCount_) + " vertices (indices start at 0)");
+    }
+  }
+
+  std::string where(const Element& e, long long instance) const {
+    const std::string prefix = format_ == Format::ascii ? at() : path_ + ": ";
+    return prefix + e.name + " " + std::to_string(instance);
+  }
+
+  void walkAscii() {
+    std::string_view line;
+    for (const Element& e : elements_) {
+      for (long long i = 0; i < e.count; ++i) {
+        if (!lines_.next(line)) {
+          throw InputError(path_ + ": the file ends after " + std::to_string(i) + " of the " +
+                           std::to_string(e.count) + " '" + e.name + "' lines the header promises");
+        }
+        const std::vector<std::string_view> t = splitWhitespace(line);
+        if (t.empty()) throw InputError(at() + "blank line inside the PLY data (one " + e.name + " per line)");
+        std::size_t k = 0;
+        auto value = [&](const ScalarType& type, const std::string& what) -> long long {
+          if (k >= t.size()) {
+            throw InputError(where(e, i) + ": the line ends before its " + what + " (one " + e.name + " per line)");
+          }
+          double number = 0.0;
+          long long integer = 0;
+          const bool ok = type.isInteger ? parseInteger(t[k], integer) : parseDouble(t[k], number);
+          if (!ok) {
+            throw InputError(where(e, i) + ": " + quoteToken(t[k]) + " is not " +
+                             (type.isInteger ? "an integer" : "a number"));
+          }
+          ++k;
+          return type.isInteger ? integer : 0;
+        };
+        for (const Property& p : e.properties) {
+          if (!p.isList) {
+            value(p.valueType, "property " + p.name);
+            continue;
+          }
+          const long long n = value(p.countType, "length of list " + p.name);
+          if (n < 0) throw InputError(where(e, i) + ": list " + p.name + " has negative length " + std::to_string(n));
+          for (long long j = 0; j < n; ++j) {
+            const long long item = value(p.valueType, "list " + p.name);
+            if (isVertexIndexList(e, p)) checkIndex(item, e, i);
+          }
+        }
+        if (k != t.size()) {
+          throw InputError(where(e, i) + ": " + std::to_string(t.size() - k) +
+                           " values more than the header declares (one " + e.name + " per line)");
+        }
+      }
+    }
+  }
+
+  /// Reads one binary scalar at pos_ (bounds already checked); integers only are decoded.
+  long long readInteger(const ScalarType& type) const {
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + pos_, static_cast<std::size_t>(type.bytes));
+    std::uint64_t bits = 0;
+    for (int b = 0; b < type.bytes; ++b) {
+      const int from = format_ == Format::binaryLittleEndian ? b : type.bytes - 1 - b;
+      bits |= static_cast<std::uint64_t>(raw[from]) << (8 * b);
+    }
+    if (type.isSigned && (bits >> (8 * type.bytes - 1)) & 1u) {
+      return static_cast<long long>(bits) - (static_cast<long long>(1) << (8 * type.bytes));
+    }
+    return static_cast<long long>(bits);
+  }
+
+  [[noreturn]] void truncated(const Element& e, long long instance) const {
+    throw InputError(path_ + ": truncated binary PLY: " + e.name + " " + std::to_string(instance) + " of " +
+                     std::to_string(e.count) + " runs past the end of the file (" + std::to_string(bytes_.size()) +
+                     " bytes)");
+  }
+
+  void require(std::size_t bytes, const Element& e, long long instance) const {
+    if (bytes > bytes_.size() - pos_) truncated(e, instance);
+  }
+
+  void walkBinary() {
+    pos_ = dataOffset_;
+    for (const Element& e : elements_) {
+      for (long long i = 0; i < e.count; ++i) {
+        for (const Property& p : e.properties) {
+          if (!p.isList) {
+            require(static_cast<std::size_t>(p.valueType.bytes), e, i);
+            pos_ += static_cast<std::size_t>(p.valueType.bytes);
+            continue;
+          }
+          require(static_cast<std::size_t>(p.countType.bytes), e, i);
+          const long long n = readInteger(p.countType);
+          pos_ += static_cast<std::size_t>(p.countType.bytes);
+          if (n < 0) throw InputError(where(e, i) + ": list " + p.name + " has negative length " + std::to_string(n));
+          const std::size_t itemBytes = static_cast<std::size_t>(p.valueType.bytes);
+          if (static_cast<std::uint64_t>(n) > (bytes_.size() - pos_) / itemBytes) truncated(e, i);
+          if (isVertexIndexList(e, p) && p.valueType.isInteger) {
+            for (long long j = 0; j < n; ++j, pos_ += itemBytes) checkIndex(readInteger(p.valueType), e, i);
+          } else {
+            pos_ += static_cast<std::size_t>(n) * itemBytes;
+          }
+        }
+      }
+    }
+  }
+
+  const std::string& path_;
+  std::string_view bytes_;
+  LineScanner lines_;
+  Format format_ = Format::ascii;
+  std::vector<Element> elements_;
+  long long vertexCount_ = 0;
+  std::size_t dataOffset_ = 0;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+void requireConsistentPly(const std::string& path, std::string_view bytes) { PlyChecker(path, bytes).run(); }
+
+}  // namespace adsd::io::detail

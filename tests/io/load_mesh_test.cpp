@@ -1,0 +1,408 @@
+// adsd::io::loadMesh: every documented format, node transforms, dropped lines and points, and each
+// mesh entry of the bad-input catalogue (issue 7, item 3).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <typeinfo>
+#include <vector>
+
+#include "adsd/error.h"
+#include "adsd/io/load_mesh.h"
+#include "temp_dir.h"
+
+namespace adsd::io {
+namespace {
+
+using test::TempDir;
+
+// Assimp stores coordinates in float: 1e-6 is a few float ulps at the unit scale of these files.
+constexpr double kFloatTolerance = 1e-6;
+
+const char* const kCubeObj =
+    "# a cube [-1,1]^3 with quad faces\n"
+    "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\n"
+    "v -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+bool hasVertexNear(const Mesh& mesh, const Vec3& p) {
+  return std::any_of(mesh.vertices().begin(), mesh.vertices().end(),
+                     [&](const Vec3& v) { return (v - p).norm() < kFloatTolerance; });
+}
+
+void expectBounds(const Mesh& mesh, const Vec3& min, const Vec3& max) {
+  const Eigen::AlignedBox3d box = mesh.bounds();
+  EXPECT_LT((box.min() - min).norm(), kFloatTolerance) << box.min().transpose();
+  EXPECT_LT((box.max() - max).norm(), kFloatTolerance) << box.max().transpose();
+}
+
+/// Loads \p path expecting InputError; returns its message after checking that it is one line and
+/// names the file.
+std::string loadError(const std::string& path) {
+  try {
+    loadMesh(path);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    return message;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "expected adsd::InputError, got " << typeid(e).name() << ": " << e.what();
+    return "";
+  }
+  ADD_FAILURE() << "expected adsd::InputError for " << path << ", the load succeeded";
+  return "";
+}
+
+void appendUint32(std::string& bytes, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<char>((value >> (8 * i)) & 0xff));
+}
+
+void appendFloat(std::string& bytes, float value) {
+  std::uint32_t bits;
+  static_assert(sizeof bits == sizeof value);
+  std::memcpy(&bits, &value, sizeof bits);
+  appendUint32(bytes, bits);
+}
+
+/// A binary STL of the given triangles (9 floats each); the header may promise a different count.
+std::string binaryStl(const std::vector<std::array<float, 9>>& triangles, std::uint32_t promisedCount) {
+  std::string bytes(80, ' ');
+  bytes.replace(0, 12, "binary test ");
+  appendUint32(bytes, promisedCount);
+  for (const auto& t : triangles) {
+    for (int i = 0; i < 3; ++i) appendFloat(bytes, 0.0f);  // normal: unused by us
+    for (float c : t) appendFloat(bytes, c);
+    bytes.append(2, '\0');  // attribute byte count
+  }
+  return bytes;
+}
+
+/// A COLLADA document: one triangle geometry, instanced by the given <node> elements.
+std::string colladaWithNodes(const std::string& nodes, const std::string& upAxis = "Y_UP") {
+  return R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>)" + upAxis + R"(</up_axis></asset>
+  <library_geometries>
+    <geometry id="tri" name="tri">
+      <mesh>
+        <source id="tri-pos">
+          <float_array id="tri-pos-array" count="9">1 0 0  2 0 0  1 0 1</float_array>
+          <technique_common>
+            <accessor source="#tri-pos-array" count="3" stride="3">
+              <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+            </accessor>
+          </technique_common>
+        </source>
+        <vertices id="tri-vtx"><input semantic="POSITION" source="#tri-pos"/></vertices>
+        <triangles count="1"><input semantic="VERTEX" source="#tri-vtx" offset="0"/><p>0 1 2</p></triangles>
+      </mesh>
+    </geometry>
+  </library_geometries>
+  <library_visual_scenes>
+    <visual_scene id="scene" name="scene">)" + nodes + R"(</visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+}
+
+TEST(LoadMesh, ObjQuadsAreTriangulatedAndCornersShared) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("cube.obj", kCubeObj));
+  EXPECT_EQ(mesh.triangleCount(), 12u);
+  EXPECT_EQ(mesh.vertices().size(), 8u);
+  expectBounds(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  EXPECT_EQ(mesh.name(), dir.path("cube.obj"));
+}
+
+TEST(LoadMesh, AsciiStl) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("quad.stl",
+                                       "solid quad\n"
+                                       "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 2 0 0\n  vertex 2 3 0\n endloop\nendfacet\n"
+                                       "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 2 3 0\n  vertex 0 3 0\n endloop\nendfacet\n"
+                                       "endsolid quad\n"));
+  EXPECT_EQ(mesh.triangleCount(), 2u);
+  EXPECT_EQ(mesh.vertices().size(), 4u);
+  expectBounds(mesh, Vec3(0, 0, 0), Vec3(2, 3, 0));
+}
+
+TEST(LoadMesh, BinaryStl) {
+  TempDir dir;
+  const std::vector<std::array<float, 9>> triangles = {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 5, 1, 0, 5, 0, 1, 5}};
+  const Mesh mesh = loadMesh(dir.write("two.stl", binaryStl(triangles, 2)));
+  EXPECT_EQ(mesh.triangleCount(), 2u);
+  expectBounds(mesh, Vec3(0, 0, 0), Vec3(1, 1, 5));
+}
+
+TEST(LoadMesh, BinaryStlWhoseHeaderStartsWithSolid) {
+  TempDir dir;
+  std::string bytes = binaryStl({{0, 0, 0, 1, 0, 0, 0, 1, 0}}, 1);
+  bytes.replace(0, 12, "solid binary");
+  const Mesh mesh = loadMesh(dir.write("solid.stl", bytes));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
+TEST(LoadMesh, AsciiPly) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("pyramid.ply",
+                                       "ply\nformat ascii 1.0\n"
+                                       "element vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                                       "element face 5\nproperty list uchar int vertex_indices\nend_header\n"
+                                       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 2\n"
+                                       "4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n"));
+  EXPECT_EQ(mesh.triangleCount(), 6u);  // the square base becomes two triangles
+  expectBounds(mesh, Vec3(0, 0, 0), Vec3(1, 1, 2));
+  EXPECT_TRUE(hasVertexNear(mesh, Vec3(0.5, 0.5, 2)));
+}
+
+TEST(LoadMesh, Off) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("tetra.off",
+                                       "OFF\n4 4 6\n"
+                                       "0 0 0\n3 0 0\n0 3 0\n0 0 3\n"
+                                       "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n"));
+  EXPECT_EQ(mesh.triangleCount(), 4u);
+  expectBounds(mesh, Vec3(0, 0, 0), Vec3(3, 3, 3));
+}
+
+/// A binary PLY of one triangle (0,0,0), (1,0,0), (0,1,0), in the given byte order.
+std::string binaryPly(bool littleEndian, std::uint32_t thirdIndex = 2) {
+  std::string bytes = std::string("ply\nformat ") + (littleEndian ? "binary_little_endian" : "binary_big_endian") +
+                      " 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+  auto put32 = [&](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<char>(v >> (8 * (littleEndian ? i : 3 - i)) & 0xff));
+  };
+  auto putFloat = [&](float f) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    put32(bits);
+  };
+  for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) putFloat(c);
+  bytes.push_back(3);
+  put32(0);
+  put32(1);
+  put32(thirdIndex);
+  return bytes;
+}
+
+TEST(LoadMesh, BinaryPlyBothByteOrders) {
+  TempDir dir;
+  for (const bool little : {true, false}) {
+    const Mesh mesh = loadMesh(dir.write(little ? "le.ply" : "be.ply", binaryPly(little)));
+    EXPECT_EQ(mesh.triangleCount(), 1u);
+    expectBounds(mesh, Vec3(0, 0, 0), Vec3(1, 1, 0));
+  }
+}
+
+TEST(LoadMesh, OffWithoutKeywordWithCommentsAndBlankLines) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("loose.off",
+                                       "# a comment first\n\n3 1 0   # counts\n\n# and before the data\n"
+                                       "0 0 0\n\n2 0 0\n0 2 0\n3 0 1 2\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+  expectBounds(mesh, Vec3(0, 0, 0), Vec3(2, 2, 0));
+}
+
+TEST(LoadMesh, AsciiStlWithUtf8Name) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("named.stl",
+                                       "solid W\xc3\xbcrfel\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                       "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid W\xc3\xbcrfel\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
+TEST(LoadMesh, ColladaNestedNodeTransformsComposeFromTheRoot) {
+  TempDir dir;
+  // p_root = T_parent * T_child * p: rotate 90 degrees about z first, then translate by (10,0,0).
+  // The opposite order would put the triangle near (0, 11, 0).
+  const Mesh mesh = loadMesh(dir.write("nested.dae", colladaWithNodes(R"(
+      <node id="parent" name="parent"><translate>10 0 0</translate>
+        <node id="child" name="child"><rotate>0 0 1 90</rotate>
+          <instance_geometry url="#tri"/>
+        </node>
+      </node>)")));
+  ASSERT_EQ(mesh.triangleCount(), 1u);
+  EXPECT_TRUE(hasVertexNear(mesh, Vec3(10, 1, 0)));
+  EXPECT_TRUE(hasVertexNear(mesh, Vec3(10, 2, 0)));
+  EXPECT_TRUE(hasVertexNear(mesh, Vec3(10, 1, 1)));
+}
+
+TEST(LoadMesh, ColladaMeshInstancedTwiceIsPlacedTwice) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("twice.dae", colladaWithNodes(R"(
+      <node id="first" name="first"><instance_geometry url="#tri"/></node>
+      <node id="second" name="second"><matrix>1 0 0 0  0 1 0 0  0 0 1 5  0 0 0 1</matrix>
+        <instance_geometry url="#tri"/></node>)")));
+  ASSERT_EQ(mesh.triangleCount(), 2u);
+  EXPECT_TRUE(hasVertexNear(mesh, Vec3(1, 0, 0)));
+  EXPECT_TRUE(hasVertexNear(mesh, Vec3(1, 0, 5)));
+  EXPECT_TRUE(hasVertexNear(mesh, Vec3(1, 0, 6)));
+}
+
+TEST(LoadMesh, ObjLinesAndPointsAreDropped) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("mixed.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 7 7 7\nv 9 9 9\n"
+                                       "f 1 2 3\nl 4 5\np 5\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+  // The line's and the point's vertices are gone with them.
+  expectBounds(mesh, Vec3(0, 0, 0), Vec3(1, 1, 0));
+}
+
+TEST(LoadMesh, ZeroAreaTrianglesAreValid) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
+// ---- The bad-input catalogue: each case throws InputError naming the file, in one line. ----
+
+TEST(LoadMeshBadInput, MissingFile) {
+  TempDir dir;
+  EXPECT_NE(loadError(dir.path("absent.obj")).find("no such file"), std::string::npos);
+}
+
+TEST(LoadMeshBadInput, Directory) {
+  TempDir dir;
+  std::filesystem::create_directory(dir.path("folder.obj"));
+  EXPECT_NE(loadError(dir.path("folder.obj")).find("directory"), std::string::npos);
+}
+
+TEST(LoadMeshBadInput, UnreadableFile) {
+  TempDir dir;
+  const std::string path = dir.write("locked.obj", kCubeObj);
+  std::filesystem::permissions(path, std::filesystem::perms::none);
+  if (std::ifstream(path).is_open()) GTEST_SKIP() << "permissions do not apply (running as root)";
+  EXPECT_NE(loadError(path).find("cannot be opened"), std::string::npos);
+}
+
+TEST(LoadMeshBadInput, EmptyFile) {
+  TempDir dir;
+  for (const char* name : {"empty.obj", "empty.stl", "empty.ply", "empty.off", "empty.dae"}) {
+    EXPECT_NE(loadError(dir.write(name, "")).find("empty"), std::string::npos) << name;
+  }
+}
+
+TEST(LoadMeshBadInput, TruncatedBinaryStl) {
+  TempDir dir;
+  const std::string whole = binaryStl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 1, 0, 1, 0, 1, 1}}, 2);
+  const std::string cut = loadError(dir.write("cut.stl", whole.substr(0, whole.size() - 20)));
+  EXPECT_NE(cut.find("truncated binary STL"), std::string::npos) << cut;
+  EXPECT_NE(cut.find("promises 2 triangles"), std::string::npos) << cut;
+  const std::string header = loadError(dir.write("header.stl", whole.substr(0, 60)));
+  EXPECT_NE(header.find("truncated binary STL"), std::string::npos) << header;
+}
+
+TEST(LoadMeshBadInput, Unparseable) {
+  TempDir dir;
+  EXPECT_NE(loadError(dir.write("broken.dae", "<?xml version=\"1.0\"?><COLLADA><library_geometries>"))
+                .find("cannot be parsed"),
+            std::string::npos);
+  const std::string ply = loadError(dir.write("broken.ply", "ply\nformat ascii 1.0\nelement vertex banana\n"));
+  EXPECT_NE(ply.find("broken.ply:3: expected 'element <name> <count>'"), std::string::npos) << ply;
+  EXPECT_NE(loadError(dir.write("noise.xyz", std::string("\x01\x02\x03\x04 not a mesh", 17))).find(dir.path("noise.xyz")),
+            std::string::npos);
+}
+
+TEST(LoadMeshBadInput, OnlyLinesAndPoints) {
+  TempDir dir;
+  const std::string message = loadError(dir.write("wire.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n"));
+  EXPECT_NE(message.find("no triangles"), std::string::npos) << message;
+}
+
+TEST(LoadMeshBadInput, NoFacesAtAll) {
+  TempDir dir;
+  const std::string message = loadError(dir.write("cloud.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"));
+  EXPECT_NE(message.find(dir.path("cloud.obj")), std::string::npos) << message;
+}
+
+TEST(LoadMeshBadInput, NanCoordinate) {
+  TempDir dir;
+  const std::string message = loadError(dir.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+}
+
+TEST(LoadMeshBadInput, InfiniteCoordinate) {
+  TempDir dir;
+  EXPECT_NE(loadError(dir.write("inf.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n")).find("non-finite"),
+            std::string::npos);
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_NE(loadError(dir.write("inf.stl", binaryStl({{0, 0, 0, inf, 0, 0, 0, 1, 0}}, 1))).find("non-finite"),
+            std::string::npos);
+}
+
+TEST(LoadMeshBadInput, IndexOutOfRange) {
+  TempDir dir;
+  loadError(dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"));
+  loadError(dir.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"));
+  std::string dae = colladaWithNodes(R"(<node id="n" name="n"><instance_geometry url="#tri"/></node>)");
+  dae.replace(dae.find("<p>0 1 2</p>"), std::string("<p>0 1 2</p>").size(), "<p>0 1 5</p>");
+  loadError(dir.write("range.dae", dae));
+  loadError(dir.write("range.ply",
+                      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n"));
+}
+
+// Files on which assimp 5.2's PLY reader hangs, aborts, or misreads: stopped by our check first.
+TEST(LoadMeshBadInput, PlyThatAssimpWouldHangOrAbortOn) {
+  TempDir dir;
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\n";
+  const std::string noEnd = loadError(dir.write("no_end.ply", header));
+  EXPECT_NE(noEnd.find("no end_header"), std::string::npos) << noEnd;
+  const std::string noCount = loadError(dir.write("no_count.ply", "ply\nformat ascii 1.0\nelement vertex\n"));
+  EXPECT_NE(noCount.find("no_count.ply:3:"), std::string::npos) << noCount;
+  const std::string blank =
+      loadError(dir.write("blank.ply", header + "end_header\n0 0 0\n  \n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(blank.find("blank.ply:11: blank line"), std::string::npos) << blank;
+  const std::string shortFace = loadError(dir.write("short.ply", header + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"));
+  EXPECT_NE(shortFace.find("short.ply:13: face 0"), std::string::npos) << shortFace;
+  const std::string missing = loadError(dir.write("missing.ply", header + "end_header\n0 0 0\n1 0 0\n"));
+  EXPECT_NE(missing.find("ends after 2 of the 3 'vertex' lines"), std::string::npos) << missing;
+  const std::string word = loadError(dir.write("word.ply", header + "end_header\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(word.find("word.ply:11: vertex 1: 'x' is not a number"), std::string::npos) << word;
+}
+
+TEST(LoadMeshBadInput, TruncatedBinaryPly) {
+  TempDir dir;
+  const std::string whole = binaryPly(true);
+  const std::string message = loadError(dir.write("cut.ply", whole.substr(0, whole.size() - 3)));
+  EXPECT_NE(message.find("truncated binary PLY: face 0 of 1"), std::string::npos) << message;
+  const std::string range = loadError(dir.write("range_bin.ply", binaryPly(false, 3)));
+  EXPECT_NE(range.find("face 0 refers to vertex 3 but the file has 3 vertices"), std::string::npos) << range;
+}
+
+// Files assimp 5.2's OFF reader would silently repair (clamp, drop, or zero-fill).
+TEST(LoadMeshBadInput, OffThatAssimpWouldSilentlyRepair) {
+  TempDir dir;
+  const std::string range = loadError(dir.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"));
+  EXPECT_NE(range.find("range.off:6: face 0 refers to vertex 7 but the file has 3 vertices"), std::string::npos)
+      << range;
+  const std::string missing = loadError(dir.write("few.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  // The face line is read as the fourth vertex, as assimp would; then the face is missing.
+  EXPECT_NE(missing.find("few.off: the OFF header promises 1 face but the file ends after 0"), std::string::npos)
+      << missing;
+  const std::string big = loadError(dir.write("big.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n10 0 1 2 0 1 2 0 1 2 0\n"));
+  EXPECT_NE(big.find("big.off:6: face 0 has 10 corners"), std::string::npos) << big;
+  const std::string comment = loadError(dir.write("comment.off", "OFF\n3 1 0\n0 0 0\n# here\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(comment.find("comment.off:4: vertex 1"), std::string::npos) << comment;
+  const std::string faces = loadError(dir.write("faces.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(faces.find("promises 2 faces but the file ends after 1"), std::string::npos) << faces;
+  const std::string none = loadError(dir.write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"));
+  EXPECT_NE(none.find("no triangles"), std::string::npos) << none;
+}
+
+}  // namespace
+}  // namespace adsd::io
