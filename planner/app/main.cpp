@@ -1,0 +1,57 @@
+// The `adsd` program: `adsd <command> [arguments]`, one file per command (see commands.h).
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+
+namespace {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const std::vector<std::string>& args);
+};
+
+// One line per command; `adsd --help` lists them in this order.
+const Command kCommands[] = {
+    {"distance", "minimum distance between two meshes: one query, or one per line of a pose file",
+     adsd::app::distanceCommand},
+    {"plan", "solve a motion-planning problem file (OMPL.app .cfg) with the adsd validity checker",
+     adsd::app::planCommand},
+};
+
+void printUsage(std::ostream& out) {
+  out << "usage: adsd <command> [arguments]   (adsd <command> --help describes one)\n\ncommands:\n";
+  for (const Command& c : kCommands) {
+    std::string name = c.name;
+    name.resize(12, ' ');
+    out << "  " << name << c.summary << '\n';
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) {
+    printUsage(std::cerr);
+    return 2;
+  }
+  const std::string& name = args.front();
+  if (name == "--help" || name == "-h" || name == "help") {
+    printUsage(std::cout);
+    return 0;
+  }
+  if (name == "--version") {
+    std::cout << "adsd " << ADSD_VERSION << '\n';
+    return 0;
+  }
+  for (const Command& c : kCommands) {
+    if (name == c.name) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
+  std::cerr << "adsd: unknown command '" << name << "' (adsd --help lists the commands)\n";
+  return 2;
+}

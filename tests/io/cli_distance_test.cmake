@@ -1,0 +1,213 @@
+# Runs the built `adsd distance` as a user would, on files written here, and checks exit status,
+# stdout and stderr. Usage: cmake -DADSD=/path/to/adsd -DWORK_DIR=/tmp/dir -P cli_distance_test.cmake
+cmake_minimum_required(VERSION 3.16)
+if(NOT ADSD OR NOT WORK_DIR)
+  message(FATAL_ERROR "usage: cmake -DADSD=<adsd program> -DWORK_DIR=<scratch dir> -P ${CMAKE_CURRENT_LIST_FILE}")
+endif()
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(failures 0)
+
+# ---- helpers -------------------------------------------------------------------------------------
+
+function(fail what)
+  message(SEND_ERROR "FAIL: ${what}")
+  math(EXPR n "${failures} + 1")
+  set(failures ${n} PARENT_SCOPE)
+endfunction()
+
+# run_adsd(<exit code> <args...> [STDIN file]): sets OUT and ERR in the caller.
+function(run_adsd expected)
+  cmake_parse_arguments(R "" "STDIN" "" ${ARGN})
+  set(input)
+  if(R_STDIN)
+    set(input INPUT_FILE "${R_STDIN}")
+  endif()
+  execute_process(COMMAND "${ADSD}" ${R_UNPARSED_ARGUMENTS} ${input} WORKING_DIRECTORY "${WORK_DIR}"
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+  string(REPLACE ";" " " shown "${R_UNPARSED_ARGUMENTS}")
+  message(STATUS "adsd ${shown} -> ${rc}")
+  if(NOT rc STREQUAL "${expected}")
+    message(SEND_ERROR "FAIL: adsd ${shown}: exit status ${rc}, expected ${expected}\nstdout: ${out}\nstderr: ${err}")
+    math(EXPR n "${failures} + 1")
+    set(failures ${n} PARENT_SCOPE)
+  endif()
+  set(OUT "${out}" PARENT_SCOPE)
+  set(ERR "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_contains haystack needle what)
+  string(FIND "${haystack}" "${needle}" at)
+  if(at EQUAL -1)
+    fail("${what}: expected to find '${needle}' in:\n${haystack}")
+    set(failures ${failures} PARENT_SCOPE)
+  endif()
+endfunction()
+
+# A bad-input run: exit status 2, one line on stderr containing every NEEDLE, nothing on stdout.
+function(expect_bad_input)
+  run_adsd(2 ${ARGN})
+  string(REPLACE ";" " " shown "${ARGN}")
+  if(NOT OUT STREQUAL "")
+    fail("adsd ${shown}: wrote to stdout on bad input:\n${OUT}")
+  endif()
+  string(REGEX MATCHALL "\n" newlines "${ERR}")
+  list(LENGTH newlines lines)
+  if(NOT lines EQUAL 1)
+    fail("adsd ${shown}: expected one line on stderr, got ${lines}:\n${ERR}")
+  endif()
+  set(ERR "${ERR}" PARENT_SCOPE)
+  set(failures ${failures} PARENT_SCOPE)
+endfunction()
+
+# ---- inputs --------------------------------------------------------------------------------------
+
+# The cube [-1,1]^3 with quad faces, and the same cube moved by 3 along x: 1 apart.
+set(cube_vertices "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n")
+set(cube_faces "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n")
+file(WRITE "${WORK_DIR}/cube.obj" "${cube_vertices}${cube_faces}")
+file(WRITE "${WORK_DIR}/cube_at_3.obj"
+  "v 2 -1 -1\nv 4 -1 -1\nv 4 1 -1\nv 2 1 -1\nv 2 -1 1\nv 4 -1 1\nv 4 1 1\nv 2 1 1\n${cube_faces}")
+file(WRITE "${WORK_DIR}/wire.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n")
+file(WRITE "${WORK_DIR}/nan.obj" "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")
+file(WRITE "${WORK_DIR}/empty.stl" "")
+file(WRITE "${WORK_DIR}/range.off" "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")
+
+# Queries on (cube, cube): B moved by (3,0,0): distance 1; B moved by (0,0,6) and turned 90 degrees
+# about z (qw = qz = sqrt(1/2)): distance 4; A moved by (-2,0,0) and B by (2,0,0): distance 2.
+file(WRITE "${WORK_DIR}/poses.txt"
+  "# tx ty tz qw qx qy qz (A), then B\n"
+  "0 0 0 1 0 0 0   3 0 0 1 0 0 0\n"
+  "\n"
+  "0 0 0 1 0 0 0   0 0 6 0.70710678118654752 0 0 0.70710678118654752  # turned\n"
+  "-2 0 0 1 0 0 0   2 0 0 1 0 0 0\n")
+file(WRITE "${WORK_DIR}/poses13.txt"
+  "0 0 0 1 0 0 0   3 0 0 1 0 0 0\n# comment\n0 0 0 1 0 0 0   3 0 0 1 0 0\n")
+file(WRITE "${WORK_DIR}/poses_norm.txt" "0 0 0 1 0 0 0   3 0 0 1.2 0 0 0\n")
+file(WRITE "${WORK_DIR}/poses_empty.txt" "# nothing here\n\n")
+
+# ---- the program and its commands ----------------------------------------------------------------
+
+run_adsd(0 --help)
+expect_contains("${OUT}" "distance" "adsd --help lists the distance command")
+run_adsd(2)
+run_adsd(2 no-such-command)
+expect_contains("${ERR}" "unknown command 'no-such-command'" "unknown command")
+run_adsd(0 distance --help)
+expect_contains("${OUT}" "--poses" "adsd distance --help")
+
+# ---- answers -------------------------------------------------------------------------------------
+
+run_adsd(0 distance cube.obj cube_at_3.obj)
+expect_contains("${OUT}" "distance    1\n" "summary distance of two cubes 1 apart")
+expect_contains("${OUT}" "interval    [1, 1]" "summary interval")
+expect_contains("${OUT}" "status      exact" "summary status")
+expect_contains("${OUT}" "witness A   1 " "witness A on the face x = 1")
+expect_contains("${OUT}" "witness B   2 " "witness B on the face x = 2")
+expect_contains("${OUT}" "counters" "summary counters")
+expect_contains("${OUT}" "time" "summary time")
+
+# CSV rows from a pose file, then the same from stdin.
+foreach(source poses.txt -)
+  if(source STREQUAL "-")
+    run_adsd(0 distance cube.obj cube.obj --poses - --csv STDIN "${WORK_DIR}/poses.txt")
+  else()
+    run_adsd(0 distance cube.obj cube.obj --poses ${source} --csv)
+  endif()
+  string(REGEX REPLACE "\n$" "" csv "${OUT}")
+  string(REPLACE "\n" ";" rows "${csv}")
+  list(LENGTH rows count)
+  if(NOT count EQUAL 4)
+    fail("--poses ${source} --csv: expected a header and 3 rows, got:\n${OUT}")
+  else()
+    list(GET rows 0 header)
+    if(NOT header MATCHES "^distance,lower,upper,status,ax,ay,az,bx,by,bz,micros,line,")
+      fail("CSV header: ${header}")
+    endif()
+    # Expected distance and pose-file line of each row; values compared as numbers within 1e-9.
+    set(expected_rows "1 2" "4 4" "2 5")
+    foreach(i 1 2 3)
+      list(GET rows ${i} row)
+      string(REPLACE "," ";" fields "${row}")
+      list(GET fields 0 d)
+      list(GET fields 3 status)
+      list(GET fields 11 line)
+      math(EXPR e "${i} - 1")
+      list(GET expected_rows ${e} pair)
+      separate_arguments(pair)
+      list(GET pair 0 want)
+      list(GET pair 1 want_line)
+      # |d - want| <= 1e-9 (want is an integer), with CMake's numeric comparisons (doubles).
+      math(EXPR below "${want} - 1")
+      if(NOT d MATCHES "^[0-9.e+-]+$")
+        fail("row ${i}: distance '${d}' is not a number")
+      elseif(d LESS "${below}.999999999" OR d GREATER "${want}.000000001")
+        fail("row ${i}: distance ${d}, expected ${want}")
+      endif()
+      if(NOT status STREQUAL "exact")
+        fail("row ${i}: status ${status}")
+      endif()
+      if(NOT line STREQUAL want_line)
+        fail("row ${i}: line ${line}, expected ${want_line}")
+      endif()
+    endforeach()
+    list(GET rows 1 first)
+    if(NOT first MATCHES "^1,1,1,exact,1,[^,]+,[^,]+,2,")
+      fail("row 1: witnesses should lie on x = 1 (A) and x = 2 (B): ${first}")
+    endif()
+  endif()
+endforeach()
+
+# The query modes.
+run_adsd(0 distance cube.obj cube_at_3.obj --threshold 0.5 --csv)
+expect_contains("${OUT}" ",above-threshold," "threshold 0.5 on distance 1")
+run_adsd(0 distance cube.obj cube_at_3.obj --threshold 2 --csv)
+expect_contains("${OUT}" ",within-threshold," "threshold 2 on distance 1")
+run_adsd(0 distance cube.obj cube_at_3.obj --cap 0.5)
+expect_contains("${OUT}" "status      beyond-cap" "cap 0.5 on distance 1")
+run_adsd(0 distance cube.obj cube_at_3.obj --abs-tol 0.25 --rel-tol 0)
+expect_contains("${OUT}" "query       tolerance" "tolerance mode")
+
+# ---- bad input: exit status 2, one line naming the file (and line), nothing on stdout ------------
+
+expect_bad_input(distance cube.obj missing.obj)
+expect_contains("${ERR}" "missing.obj: no such file" "missing mesh")
+expect_bad_input(distance cube.obj empty.stl --csv)
+expect_contains("${ERR}" "empty.stl: the file is empty" "empty mesh file")
+expect_bad_input(distance wire.obj cube.obj)
+expect_contains("${ERR}" "wire.obj: the file holds no triangles" "lines only")
+expect_bad_input(distance cube.obj nan.obj)
+expect_contains("${ERR}" "nan.obj: " "NaN coordinate")
+expect_contains("${ERR}" "non-finite" "NaN coordinate")
+expect_bad_input(distance range.off cube.obj)
+expect_contains("${ERR}" "range.off:6: face 0 refers to vertex 7" "index out of range")
+expect_bad_input(distance cube.obj cube.obj --poses poses13.txt --csv)
+expect_contains("${ERR}" "poses13.txt:3: expected 14 numbers" "13 numbers")
+expect_contains("${ERR}" "got 13" "13 numbers")
+expect_bad_input(distance cube.obj cube.obj --poses - STDIN "${WORK_DIR}/poses13.txt")
+expect_contains("${ERR}" "stdin:3: expected 14 numbers" "13 numbers on stdin")
+expect_bad_input(distance cube.obj cube.obj --poses poses_norm.txt)
+expect_contains("${ERR}" "poses_norm.txt:1: quaternion of mesh B has norm 1.2" "non-unit quaternion")
+expect_bad_input(distance cube.obj cube.obj --poses poses_empty.txt)
+expect_contains("${ERR}" "poses_empty.txt: no poses" "empty pose file")
+expect_bad_input(distance cube.obj cube.obj --poses no_such_poses.txt)
+expect_contains("${ERR}" "no_such_poses.txt: no such file" "missing pose file")
+expect_bad_input(distance cube.obj cube_at_3.obj --threshold 1 --cap 2)
+expect_contains("${ERR}" "select different query modes" "conflicting modes")
+expect_bad_input(distance cube.obj cube_at_3.obj --abs-tol 0.1 --cap 2)
+expect_contains("${ERR}" "select different query modes" "conflicting modes")
+expect_bad_input(distance cube.obj cube_at_3.obj --cap 0)
+expect_contains("${ERR}" "--cap: expected a finite number > 0, got '0'" "cap 0")
+expect_bad_input(distance cube.obj cube_at_3.obj --abs-tol abc)
+expect_contains("${ERR}" "--abs-tol" "non-numeric tolerance")
+expect_bad_input(distance cube.obj cube_at_3.obj --threshold nan)
+expect_contains("${ERR}" "--threshold" "NaN threshold")
+expect_bad_input(distance cube.obj)
+expect_contains("${ERR}" "expected two mesh files" "one mesh")
+expect_bad_input(distance cube.obj cube.obj --no-such-option)
+expect_contains("${ERR}" "no-such-option" "unknown option")
+
+if(failures GREATER 0)
+  message(FATAL_ERROR "${failures} check(s) failed")
+endif()
+message(STATUS "all adsd distance checks passed")
