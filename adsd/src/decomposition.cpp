@@ -50,12 +50,12 @@ inline void cornerRange(const TriangleIndices& t, const std::vector<double>& pro
 
 void Query::testAllPairs(const SubMesh& a, const SubMesh& b) {
   for (std::uint32_t i = a.t0; i < a.t1 && !done_; ++i) {
-    const std::uint32_t ta = buf_.orderA[i];
+    const std::uint32_t ta = orderA_[i];
     const Vec3& p0 = a_.corner(ta, 0);
     const Vec3& p1 = a_.corner(ta, 1);
     const Vec3& p2 = a_.corner(ta, 2);
     for (std::uint32_t j = b.t0; j < b.t1 && !done_; ++j) {
-      const std::uint32_t tb = buf_.orderB[j];
+      const std::uint32_t tb = orderB_[j];
       const TrianglePairResult t = triangleDistance(p0, p1, p2, toA(b_.corner(tb, 0)), toA(b_.corner(tb, 1)),
                                                     toA(b_.corner(tb, 2)));
       ++counters_.trianglePairsTested;
@@ -96,18 +96,86 @@ void Query::visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hin
       ++counters_.pairsRejectedByBounds;
       return;
     }
-    ++counters_.pairsHashed;
-    hashStage(a, b, g);
-    return;
+    // From scratch, every separated pair is hashed (sec. 5). With trees, descending further is
+    // cheap (no re-partitioning, supports by branch and bound) and gives each smaller pair its
+    // own tighter bounds, so only pairs below kTreeHashPairs are hashed.
+    if (a.node < 0 || static_cast<std::uint64_t>(nA) * nB <= tolerance::kTreeHashPairs) {
+      ++counters_.pairsHashed;
+      hashStage(a, b, g);
+      return;
+    }
   }
+  ++counters_.pairsSplit;
 
+  if (a.node >= 0) {
+    splitAlongTrees(a, b, depth, g.direction);
+  } else {
+    splitAdaptively(a, b, depth, g.direction);
+  }
+}
+
+SubMesh Query::nodeA(std::int32_t i) const {
+  const MeshHierarchy::Node& n = treeA_->nodes()[i];
+  return SubMesh{n.t0, n.t1, 0, 0, i};
+}
+
+SubMesh Query::nodeB(std::int32_t i) const {
+  const MeshHierarchy::Node& n = treeB_->nodes()[i];
+  return SubMesh{n.t0, n.t1, 0, 0, i};
+}
+
+double Query::nodeLowerBound(std::int32_t na, std::int32_t nb) const {
+  const Eigen::AlignedBox3d& boxA = treeA_->nodes()[na].box;
+  const Eigen::AlignedBox3d& boxB = treeB_->nodes()[nb].box;
+  return (boxA.center() - toA(boxB.center())).norm() - 0.5 * boxA.diagonal().norm() - 0.5 * boxB.diagonal().norm();
+}
+
+void Query::splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n) {
+  // Both nodes split into their children (a leaf stays whole), as Algorithm 1 splits both meshes;
+  // the child pairs go nearest first by their bounding spheres, which also drop pairs beyond the
+  // global upper bound before any GJK runs on them (sec. 6.2).
+  const MeshHierarchy::Node& na = treeA_->nodes()[a.node];
+  const MeshHierarchy::Node& nb = treeB_->nodes()[b.node];
+  std::int32_t partsA[2] = {a.node, -1};
+  std::int32_t partsB[2] = {b.node, -1};
+  if (!na.isLeaf()) {
+    partsA[0] = na.left;
+    partsA[1] = na.right;
+  }
+  if (!nb.isLeaf()) {
+    partsB[0] = nb.left;
+    partsB[1] = nb.right;
+  }
+  Child children[4];
+  int count = 0;
+  for (std::int32_t pa : partsA) {
+    if (pa < 0) continue;
+    for (std::int32_t pb : partsB) {
+      if (pb < 0) continue;
+      Child c{static_cast<std::uint32_t>(pa), static_cast<std::uint32_t>(pb), nodeLowerBound(pa, pb)};
+      int k = count++;
+      for (; k > 0 && c.lower < children[k - 1].lower; --k) children[k] = children[k - 1];
+      children[k] = c;
+    }
+  }
+  for (int k = 0; k < count && !done_; ++k) {
+    const Child& c = children[k];
+    if (skip(c.lower - roundoff_)) {
+      ++counters_.pairsRejectedByBounds;
+      continue;
+    }
+    visit(nodeA(static_cast<std::int32_t>(c.a)), nodeB(static_cast<std::int32_t>(c.b)), depth + 1, -n);
+  }
+}
+
+void Query::splitAdaptively(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n) {
+  const std::uint32_t nA = a.triangles();
+  const std::uint32_t nB = b.triangles();
   // Stage three (sec. 6.1): the hulls overlap. Split along the direction GJK ended on (the one of
   // least overlap): the plane through B's support point (n.x = minB) cuts A into the part wholly
   // before B begins and the rest; the plane through A's support point (n.x = maxA) cuts B into the
   // part wholly beyond A and the rest. The parts so cut off are separated from the other mesh by
   // construction, so three of the four child pairs have disjoint hulls.
-  ++counters_.pairsSplit;
-  const Vec3 n = g.direction;
   projectA(a, n);
   projectB(b, n);
   double maxA = -std::numeric_limits<double>::infinity();

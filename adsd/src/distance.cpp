@@ -68,8 +68,52 @@ Query::Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
   roundoff_ = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude_;
 }
 
+namespace {
+
+/// Support mapping (eq. 4-5) of a tree node, by branch and bound: a subtree whose box cannot beat
+/// the best vertex so far is not entered. Exact: it returns a vertex of maximal d.x.
+std::uint32_t treeSupport(const MeshHierarchy& tree, const std::vector<Vec3>& vertices, std::int32_t root,
+                          const Vec3& d) {
+  const std::vector<MeshHierarchy::Node>& nodes = tree.nodes();
+  const std::vector<std::uint32_t>& leafVertices = tree.leafVertices();
+  double bestValue = -std::numeric_limits<double>::infinity();
+  std::uint32_t bestVertex = leafVertices.empty() ? 0 : UINT32_MAX;
+  std::int32_t stack[128];
+  int top = 0;
+  stack[top++] = root;
+  while (top > 0) {
+    const MeshHierarchy::Node& n = nodes[stack[--top]];
+    if (boxSupport(n.box, d) <= bestValue) continue;
+    if (n.isLeaf()) {
+      for (std::uint32_t k = n.v0; k < n.v1; ++k) {
+        const double value = d.dot(vertices[leafVertices[k]]);
+        if (value > bestValue) {
+          bestValue = value;
+          bestVertex = leafVertices[k];
+        }
+      }
+      continue;
+    }
+    // Nearer child last, so that it is popped first and raises the bar for the other.
+    const double l = boxSupport(nodes[n.left].box, d);
+    const double r = boxSupport(nodes[n.right].box, d);
+    stack[top++] = l > r ? n.right : n.left;
+    stack[top++] = l > r ? n.left : n.right;
+  }
+  return bestVertex;
+}
+
+}  // namespace
+
 SupportPoint Query::supportA(const SubMesh& a, const Vec3& d) const {
   const std::vector<Vec3>& vertices = a_.vertices();
+  if (a.node >= 0) {
+    SupportPoint s;
+    s.feature = treeSupport(*treeA_, vertices, a.node, d);
+    s.point = vertices[s.feature];
+    s.isVertex = true;
+    return s;
+  }
   double bestValue = -std::numeric_limits<double>::infinity();
   std::uint32_t bestVertex = buf_.verticesA[a.v0];
   for (std::uint32_t i = a.v0; i < a.v1; ++i) {
@@ -92,6 +136,13 @@ SupportPoint Query::supportB(const SubMesh& b, const Vec3& dInA) const {
   // the winner.
   const Vec3 d = rotationAB_ * dInA;
   const std::vector<Vec3>& vertices = b_.vertices();
+  if (b.node >= 0) {
+    SupportPoint s;
+    s.feature = treeSupport(*treeB_, vertices, b.node, d);
+    s.point = toA(vertices[s.feature]);
+    s.isVertex = true;
+    return s;
+  }
   double bestValue = -std::numeric_limits<double>::infinity();
   std::uint32_t bestVertex = buf_.verticesB[b.v0];
   for (std::uint32_t i = b.v0; i < b.v1; ++i) {
@@ -201,6 +252,16 @@ std::int64_t triangleWithVertex(const Mesh& mesh, std::int64_t vertex) {
 DistanceResult Query::run() {
   const std::uint32_t nA = static_cast<std::uint32_t>(a_.triangleCount());
   const std::uint32_t nB = static_cast<std::uint32_t>(b_.triangleCount());
+  // First search vector: from a corner of B to a corner of A (any non-zero guess of a - b).
+  const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
+  if (a_.hierarchy() != nullptr && b_.hierarchy() != nullptr) {
+    treeA_ = a_.hierarchy();
+    treeB_ = b_.hierarchy();
+    orderA_ = treeA_->order().data();
+    orderB_ = treeB_->order().data();
+    visit(nodeA(0), nodeB(0), 0, start);
+    return finish();
+  }
   buf_.orderA.resize(nA);
   buf_.orderB.resize(nB);
   std::iota(buf_.orderA.begin(), buf_.orderA.end(), 0u);
@@ -222,11 +283,13 @@ DistanceResult Query::run() {
   }
   const SubMesh rootA = collectVertices(a_, buf_.orderA, 0, nA, buf_.verticesA, buf_.vertexMarkA, ++buf_.mark);
   const SubMesh rootB = collectVertices(b_, buf_.orderB, 0, nB, buf_.verticesB, buf_.vertexMarkB, ++buf_.mark);
-
-  // First search vector: from a corner of B to a corner of A (any non-zero guess of a - b).
-  const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
+  orderA_ = buf_.orderA.data();
+  orderB_ = buf_.orderB.data();
   visit(rootA, rootB, 0, start);
+  return finish();
+}
 
+DistanceResult Query::finish() const {
   DistanceResult r;
   r.counters = counters_;
   r.upper = best_;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "adsd/error.h"
+#include "adsd/mesh_hierarchy.h"
 
 namespace adsd {
 
@@ -54,7 +55,14 @@ void Mesh::setVertices(const std::vector<Vec3>& vertices) {
   requireFinite(vertices, name_);
   vertices_ = vertices;
   refreshVertexFacts();
+  if (hierarchy_) {
+    auto refitted = std::make_shared<MeshHierarchy>(*hierarchy_);
+    refitted->refit(*this);
+    hierarchy_ = std::move(refitted);
+  }
 }
+
+void Mesh::buildHierarchy() { hierarchy_ = std::make_shared<const MeshHierarchy>(*this); }
 
 Eigen::AlignedBox3d Mesh::bounds() const {
   Eigen::AlignedBox3d box;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "adsd/distance.h"
+#include "adsd/mesh_hierarchy.h"
 #include "adsd/tolerances.h"
 #include "gjk.h"
 
@@ -46,9 +47,16 @@ struct DistanceScratch::Buffers {
 
 namespace detail {
 
-/// A sub-mesh: triangles order[t0, t1) and their distinct vertices vertices[v0, v1).
+/// Largest d.x over a box (eq. 4 for a box): what bounds a subtree in the trees' branch and bound.
+inline double boxSupport(const Eigen::AlignedBox3d& box, const Vec3& d) {
+  return d.dot(box.center()) + d.cwiseAbs().dot(0.5 * box.sizes());
+}
+
+/// A sub-mesh: triangles order[t0, t1) and, from scratch, their distinct vertices
+/// vertices[v0, v1); with a hierarchy, the tree node it is (node >= 0).
 struct SubMesh {
   std::uint32_t t0, t1, v0, v1;
+  std::int32_t node = -1;
   std::uint32_t triangles() const { return t1 - t0; }
 };
 
@@ -61,8 +69,17 @@ class Query {
   DistanceResult run();
 
  private:
+  DistanceResult finish() const;
   // --- stage three and the recursion (decomposition.cpp) ---
   void visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hint);
+  /// Stage three from scratch: the support-plane split of sec. 6.1, then the child pairs.
+  void splitAdaptively(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n);
+  /// Stage three with hierarchies: the larger node's children, nearest pairs first.
+  void splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n);
+  SubMesh nodeA(std::int32_t i) const;
+  SubMesh nodeB(std::int32_t i) const;
+  /// Lower bound of the distance of two tree nodes from their boxes' bounding spheres.
+  double nodeLowerBound(std::int32_t na, std::int32_t nb) const;
   void testAllPairs(const SubMesh& a, const SubMesh& b);
   /// Appends the distinct vertices of triangles order[t0, t1) to `list`; returns the sub-mesh.
   static SubMesh collectVertices(const Mesh& mesh, const std::vector<std::uint32_t>& order, std::uint32_t t0,
@@ -73,6 +90,9 @@ class Query {
   void projectB(const SubMesh& b, const Vec3& n);
   // --- stage two (spatial_hash.cpp) ---
   void hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g);
+  /// First culling: the triangles of a sub-mesh reaching into the slab, into slabA / slabB.
+  void gatherSlabA(const SubMesh& a, const Vec3& ex, const Vec3& ey, const Vec3& ez, double slabLow);
+  void gatherSlabB(const SubMesh& b, const Vec3& ex, const Vec3& ey, const Vec3& ez, double slabHigh);
   void testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb);
 
   // --- supports (eq. 4-5) over a sub-mesh's vertices, in mesh A's frame ---
@@ -94,6 +114,12 @@ class Query {
 
   const Mesh& a_;
   const Mesh& b_;
+  // Both trees, or neither (a query from scratch).
+  const MeshHierarchy* treeA_ = nullptr;
+  const MeshHierarchy* treeB_ = nullptr;
+  // The triangle permutations the sub-meshes are ranges of (the trees' or the scratch buffers').
+  const std::uint32_t* orderA_ = nullptr;
+  const std::uint32_t* orderB_ = nullptr;
   const Pose poseA_;
   const DistanceOptions options_;
   DistanceScratch::Buffers& buf_;

@@ -53,6 +53,82 @@ void Query::testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb) {
   offer(t.pointOnA, t.pointOnB, t.distance, ta.triangle, false, tb.triangle, false);
 }
 
+void Query::gatherSlabA(const SubMesh& a, const Vec3& ex, const Vec3& ey, const Vec3& ez, double slabLow) {
+  auto admit = [&](std::uint32_t t, double highest) {
+    if (highest < slabLow) return;
+    SlabTriangle s;
+    for (int k = 0; k < 3; ++k) s.corner[k] = a_.corner(t, k);
+    s.triangle = t;
+    frameBox(s, ex, ey, ez);
+    buf_.slabA.push_back(s);
+  };
+  if (a.node < 0) {
+    projectA(a, ez);
+    for (std::uint32_t i = a.t0; i < a.t1; ++i) {
+      const std::uint32_t t = orderA_[i];
+      const TriangleIndices& tri = a_.triangles()[t];
+      admit(t, std::max({buf_.projectionA[tri[0]], buf_.projectionA[tri[1]], buf_.projectionA[tri[2]]}));
+    }
+    return;
+  }
+  // With a tree: only boxes that reach up into the slab are entered.
+  std::int32_t stack[128];
+  int top = 0;
+  stack[top++] = a.node;
+  while (top > 0) {
+    const MeshHierarchy::Node& n = treeA_->nodes()[stack[--top]];
+    if (boxSupport(n.box, ez) < slabLow) continue;
+    if (!n.isLeaf()) {
+      stack[top++] = n.left;
+      stack[top++] = n.right;
+      continue;
+    }
+    for (std::uint32_t i = n.t0; i < n.t1; ++i) {
+      const std::uint32_t t = orderA_[i];
+      admit(t, std::max({ez.dot(a_.corner(t, 0)), ez.dot(a_.corner(t, 1)), ez.dot(a_.corner(t, 2))}));
+    }
+  }
+}
+
+void Query::gatherSlabB(const SubMesh& b, const Vec3& ex, const Vec3& ey, const Vec3& ez, double slabHigh) {
+  auto admit = [&](std::uint32_t t, double lowest) {
+    if (lowest > slabHigh) return;
+    SlabTriangle s;
+    for (int k = 0; k < 3; ++k) s.corner[k] = toA(b_.corner(t, k));
+    s.triangle = t;
+    frameBox(s, ex, ey, ez);
+    buf_.slabB.push_back(s);
+  };
+  if (b.node < 0) {
+    projectB(b, ez);
+    for (std::uint32_t i = b.t0; i < b.t1; ++i) {
+      const std::uint32_t t = orderB_[i];
+      const TriangleIndices& tri = b_.triangles()[t];
+      admit(t, std::min({buf_.projectionB[tri[0]], buf_.projectionB[tri[1]], buf_.projectionB[tri[2]]}));
+    }
+    return;
+  }
+  // With a tree, in B's frame: a box whose lowest point along ez lies above the slab is skipped.
+  const Vec3 ezInB = rotationAB_ * ez;
+  const double offset = ez.dot(translationBA_);
+  std::int32_t stack[128];
+  int top = 0;
+  stack[top++] = b.node;
+  while (top > 0) {
+    const MeshHierarchy::Node& n = treeB_->nodes()[stack[--top]];
+    if (-boxSupport(n.box, -ezInB) + offset > slabHigh) continue;
+    if (!n.isLeaf()) {
+      stack[top++] = n.left;
+      stack[top++] = n.right;
+      continue;
+    }
+    for (std::uint32_t i = n.t0; i < n.t1; ++i) {
+      const std::uint32_t t = orderB_[i];
+      admit(t, std::min({ezInB.dot(b_.corner(t, 0)), ezInB.dot(b_.corner(t, 1)), ezInB.dot(b_.corner(t, 2))}) + offset);
+    }
+  }
+}
+
 void Query::hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g) {
   // Sec. 5.1: the grid frame. z along the separating direction n (A towards B), x and y span
   // the separating plane.
@@ -78,28 +154,8 @@ void Query::hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g) {
   std::vector<SlabTriangle>& slabB = buf_.slabB;
   slabA.clear();
   slabB.clear();
-  projectA(a, ez);
-  projectB(b, ez);
-  for (std::uint32_t i = a.t0; i < a.t1; ++i) {
-    const std::uint32_t t = buf_.orderA[i];
-    const TriangleIndices& tri = a_.triangles()[t];
-    if (std::max({buf_.projectionA[tri[0]], buf_.projectionA[tri[1]], buf_.projectionA[tri[2]]}) < slabLowA) continue;
-    SlabTriangle s;
-    for (int k = 0; k < 3; ++k) s.corner[k] = a_.vertices()[tri[k]];
-    s.triangle = t;
-    frameBox(s, ex, ey, ez);
-    slabA.push_back(s);
-  }
-  for (std::uint32_t i = b.t0; i < b.t1; ++i) {
-    const std::uint32_t t = buf_.orderB[i];
-    const TriangleIndices& tri = b_.triangles()[t];
-    if (std::min({buf_.projectionB[tri[0]], buf_.projectionB[tri[1]], buf_.projectionB[tri[2]]}) > slabHighB) continue;
-    SlabTriangle s;
-    for (int k = 0; k < 3; ++k) s.corner[k] = toA(b_.vertices()[tri[k]]);
-    s.triangle = t;
-    frameBox(s, ex, ey, ez);
-    slabB.push_back(s);
-  }
+  gatherSlabA(a, ex, ey, ez, slabLowA);
+  gatherSlabB(b, ex, ey, ez, slabHighB);
   counters_.trianglesHashed += slabA.size() + slabB.size();
   if (upper < best_) minSkippedLower_ = std::min(minSkippedLower_, upper);  // what the slab culled is beyond it
   if (slabA.empty() || slabB.empty()) return;

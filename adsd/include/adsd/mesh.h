@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,8 @@
 #include <Eigen/Geometry>
 
 namespace adsd {
+
+class MeshHierarchy;
 
 /// The one vector type of the core (STYLE habit 9).
 using Vec3 = Eigen::Vector3d;
@@ -33,8 +36,16 @@ class Mesh {
 
   /// \brief Deforming meshes: new positions for the same vertices (same count, same triangles).
   /// Not thread-safe against concurrent queries of this mesh. Throws InputError on a non-finite
-  /// coordinate or a count mismatch, leaving the mesh unchanged.
+  /// coordinate or a count mismatch, leaving the mesh unchanged. A hierarchy, if built, is refit.
   void setVertices(const std::vector<Vec3>& vertices);
+
+  /// \brief Rigid meshes queried many times: builds the sub-mesh tree that queries then reuse
+  /// (adsd/mesh_hierarchy.h). Queries between two meshes that both have one use it; otherwise
+  /// they run the paper's adaptive decomposition from scratch. Not thread-safe against concurrent
+  /// queries of this mesh; call it before sharing the mesh.
+  void buildHierarchy();
+  /// \brief The tree, or null when none was built.
+  const MeshHierarchy* hierarchy() const { return hierarchy_.get(); }
 
   const std::vector<Vec3>& vertices() const { return vertices_; }
   const std::vector<TriangleIndices>& triangles() const { return triangles_; }
@@ -61,6 +72,8 @@ class Mesh {
   std::string name_;
   double maxAbsCoordinate_ = 0.0;
   bool allVerticesReferenced_ = false;
+  // Shared between copies of a mesh (it is immutable); setVertices gives the mesh its own.
+  std::shared_ptr<const MeshHierarchy> hierarchy_;
 };
 
 }  // namespace adsd

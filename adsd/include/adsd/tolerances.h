@@ -3,6 +3,7 @@
 /// \brief Every tolerance of the core in one place, each with its unit, scale and reason
 /// (STYLE habit 3). Values are relative to a named length scale unless stated.
 
+#include <cstdint>
 #include <limits>
 
 namespace adsd::tolerance {
@@ -55,6 +56,11 @@ inline constexpr double kMinSplitFraction = 1.0 / 8.0;
 /// triangle tests cost less than a GJK run (sec. 6.1 stops at one primitive; this is the same
 /// rule, a little earlier).
 inline constexpr int kDirectPairLimit = 16;
+
+/// With hierarchies (rigid meshes): a separated sub-mesh pair goes to the hashing stage only when
+/// it has at most this many triangle pairs; larger ones descend the trees. Chosen on the cow pair
+/// at 1 % of the diagonal (bench_distance_vs_fcl): 64 and 256 were best, 16 and 4096 ~1.5x slower.
+inline constexpr std::uint64_t kTreeHashPairs = 256;
 
 /// Hashing (sec. 5): slab pairs up to this count are tested all against all (with a box bound
 /// first): building the hash costs more than it saves below it.

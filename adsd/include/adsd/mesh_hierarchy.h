@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// \brief What a rigid motion does not change, kept between queries: a binary tree of sub-meshes.
+///
+/// The paper's algorithm needs no preprocessing, and deforming meshes use it as it is. A rigid
+/// mesh queried thousands of times (a robot and its environment in a planner) pays for the same
+/// splits and vertex scans on every query; this tree keeps them. Each node is a sub-mesh (a range
+/// of a fixed triangle permutation) with its box in the mesh frame; leaves also list their
+/// distinct vertices. Queries then (1) evaluate support mappings (eq. 4-5) by branch and bound
+/// over the boxes instead of scanning every vertex, (2) split overlapping sub-mesh pairs (sec. 6)
+/// along the tree instead of re-partitioning, and (3) gather the slab of stage two (sec. 5.3) by
+/// descending only into boxes that reach it.
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "adsd/mesh.h"
+
+namespace adsd {
+
+class MeshHierarchy {
+ public:
+  /// Leaves hold at most this many triangles: below it a GJK run costs more than direct tests.
+  static constexpr std::uint32_t kLeafTriangles = 4;
+
+  struct Node {
+    Eigen::AlignedBox3d box;      ///< bounds of the node's vertices, mesh frame
+    std::uint32_t t0 = 0, t1 = 0; ///< triangles order()[t0, t1)
+    std::uint32_t v0 = 0, v1 = 0; ///< leaves: distinct vertices leafVertices()[v0, v1)
+    std::int32_t left = -1, right = -1;  ///< children, -1 for a leaf
+    bool isLeaf() const { return left < 0; }
+  };
+
+  /// \brief Builds the tree: median splits of triangle centroids along the longest box axis.
+  explicit MeshHierarchy(const Mesh& mesh);
+
+  /// \brief New boxes for moved vertices (same mesh topology); the tree itself is kept.
+  void refit(const Mesh& mesh);
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<std::uint32_t>& order() const { return order_; }
+  const std::vector<std::uint32_t>& leafVertices() const { return leafVertices_; }
+  /// \brief Bytes kept between queries (for the memory figure of issue 6).
+  std::size_t bytes() const;
+
+ private:
+  std::int32_t build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, std::vector<std::uint32_t>& marks);
+
+  std::vector<Node> nodes_;
+  std::vector<std::uint32_t> order_;
+  std::vector<std::uint32_t> leafVertices_;
+};
+
+}  // namespace adsd
