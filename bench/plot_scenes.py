@@ -54,7 +54,8 @@ def main(csv_path, out_dir):
     fig.savefig(f"{out_dir}/time_vs_error.png", dpi=110)
 
     fig, ax = plt.subplots(figsize=(7, 5))
-    for method, color in (("ours_exact", "tab:blue"), ("ours_tol_1e-02", "tab:cyan"), ("fcl_prebuilt", "tab:red"),
+    for method, color in (("ours_exact", "tab:blue"), ("ours_tol_1e-02", "tab:cyan"), ("ours_tree_exact", "tab:purple"),
+                          ("fcl_prebuilt", "tab:red"),
                           ("fcl_rebuild", "tab:orange"), ("fcl_refit", "tab:brown"), ("brute_force", "tab:gray")):
         points = sorted((int(r["triangles"]), number(r["median_us"]) / 1000) for r in rows if r["method"] == method)
         if points:

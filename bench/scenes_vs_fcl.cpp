@@ -13,11 +13,15 @@
 ///
 /// Methods:
 ///   ours_exact, ours_tol (relative 1e-6, 1e-4, 1e-2, 1e-1), ours_threshold (D = 1 % L),
-///   ours_cap (cap = 1 % L);
+///   ours_cap (cap = 1 % L); rigid scenes also ours_tree_exact, ours_tree_tol_1e-02 and
+///   ours_tree_threshold: the same queries on meshes whose sub-mesh tree (adsd/mesh_hierarchy.h)
+///   was built once before timing, as FCL's prebuilt models are;
 ///   fcl_prebuilt (rigid scenes: OBBRSS built once), fcl_rebuild (both OBBRSS built per query:
 ///   geometry unknown each frame, the paper's setting), fcl_refit (deforming scene: the built
 ///   trees refitted top-down to each frame, see fcl_models.h), fcl_collide (rigid scenes, prebuilt, the validity question);
 ///   brute_force (the oracle itself, timed on its N queries).
+/// Planning problems (robot against environment, rigid): no fcl_rebuild; ours ÷ fcl_prebuilt and
+/// ours_threshold ÷ fcl_collide are issue 6's rigid-planning ratios.
 /// Deforming scene: each frame's vertices are computed untimed and handed to every method (ours
 /// through Mesh::setVertices, FCL through a rebuild or a refit, both timed).
 ///
@@ -47,6 +51,7 @@
 
 #include "adsd/distance.h"
 #include "adsd/error.h"
+#include "adsd/mesh_hierarchy.h"
 #include "fcl_models.h"
 #include "oracle.h"
 #include "scenes/distance_scenes.h"
@@ -97,7 +102,9 @@ struct UsageError : std::runtime_error {
 
 const char* const kUsage =
     "usage: bench_scenes [--quick] [--scenes a,b,...] [--oracle N] [--out DIR] [--no-plots]\n"
-    "  scenes: cows, stick_dragon, teddies_deforming, camels, bunnies (default: all)\n"
+    "  scenes: cows, stick_dragon, teddies_deforming, camels, bunnies, problem_NAME for each shipped\n"
+    "  planning problem (office, maze, thin_wall, bug_trap, twisted_passage, alpha_puzzle, cow_doorway);\n"
+    "  default: all\n"
     "  --oracle N: brute-force oracle on N queries per scene (default 24, --quick 3)\n";
 
 Options parseOptions(int argc, char** argv) {
@@ -266,6 +273,7 @@ struct SceneOutcome {
   bool fclAgrees = true;     // FCL's answers equal to the oracle's
   double oursExactOnOracle = 0, oracleSum = 0;
   std::size_t oracleQueries = 0;
+  double treeBytesPerTriangle = std::numeric_limits<double>::quiet_NaN();  // issue 6's memory figure
 };
 
 SceneOutcome runScene(const DistanceScene& scene, std::size_t oracleBudget, std::size_t deformingFclStride) {
@@ -292,9 +300,19 @@ SceneOutcome runScene(const DistanceScene& scene, std::size_t oracleBudget, std:
   };
 
   const std::size_t fclStride = scene.deforming ? std::max<std::size_t>(1, deformingFclStride) : 1;
+  // Rigid scenes: copies with the sub-mesh tree of adsd/mesh_hierarchy.h built once, as a planner
+  // would (issue 6); queries between two meshes that both have one reuse it.
+  std::optional<adsd::Mesh> treeA, treeB;
+  if (!scene.deforming) {
+    treeA.emplace(scene.a);
+    treeB.emplace(scene.b);
+    treeA->buildHierarchy();
+    treeB->buildHierarchy();
+  }
   std::vector<MethodRun> runs;
   adsd::DistanceScratch scratch;
-  auto addOurs = [&](std::string name, Kind kind, double parameter, adsd::DistanceOptions options) {
+  auto addOurs = [&](std::string name, Kind kind, double parameter, adsd::DistanceOptions options,
+                     bool withTree = false) {
     MethodRun m;
     m.name = std::move(name);
     m.family = "ours";
@@ -308,9 +326,11 @@ SceneOutcome runScene(const DistanceScene& scene, std::size_t oracleBudget, std:
     runs.push_back(std::move(m));
     const std::size_t k = runs.size() - 1;
     runs[k].timing.name = runs[k].name;
+    const adsd::Mesh& a = withTree ? *treeA : meshA;
+    const adsd::Mesh& b = withTree ? *treeB : meshB;
     runs[k].timing.run = [&, k, options](std::size_t i) {
       MethodRun& me = runs[k];
-      const adsd::DistanceResult r = adsd::distance(meshA, poses[i].a, meshB, poses[i].b, options, scratch);
+      const adsd::DistanceResult r = adsd::distance(a, poses[i].a, b, poses[i].b, options, scratch);
       switch (me.kind) {
         case Kind::threshold: me.value[i] = r.status == adsd::DistanceStatus::aboveThreshold ? 1.0 : 0.0; break;
         case Kind::cap: me.value[i] = r.status == adsd::DistanceStatus::beyondCap ? me.parameter : r.distance; break;
@@ -350,15 +370,24 @@ SceneOutcome runScene(const DistanceScene& scene, std::size_t oracleBudget, std:
           adsd::DistanceOptions::aboveThreshold(kThresholdFraction * length));
   addOurs("ours_cap", Kind::cap, kCapFraction * length, adsd::DistanceOptions::cappedAt(kCapFraction * length));
   if (!scene.deforming) {
+    addOurs("ours_tree_exact", Kind::distance, std::numeric_limits<double>::quiet_NaN(),
+            adsd::DistanceOptions::exactDistance(), true);
+    addOurs("ours_tree_tol_1e-02", Kind::interval, 1e-2, adsd::DistanceOptions::withTolerance(0.0, 1e-2), true);
+    addOurs("ours_tree_threshold", Kind::threshold, kThresholdFraction * length,
+            adsd::DistanceOptions::aboveThreshold(kThresholdFraction * length), true);
+  }
+  if (!scene.deforming) {
     addFcl("fcl_prebuilt", Kind::distance, [&](std::size_t i) {
       return adsd::bench::fclDistance(*prebuiltA, poses[i].a, *prebuiltB, poses[i].b).min_distance;
     });
   }
-  addFcl("fcl_rebuild", Kind::distance, [&](std::size_t i) {
-    const auto a = adsd::bench::buildObbrss(frameA, trianglesA);
-    const auto b = adsd::bench::buildObbrss(frameB, trianglesB);
-    return adsd::bench::fclDistance(*a, poses[i].a, *b, poses[i].b).min_distance;
-  });
+  if (!scene.planning) {
+    addFcl("fcl_rebuild", Kind::distance, [&](std::size_t i) {
+      const auto a = adsd::bench::buildObbrss(frameA, trianglesA);
+      const auto b = adsd::bench::buildObbrss(frameB, trianglesB);
+      return adsd::bench::fclDistance(*a, poses[i].a, *b, poses[i].b).min_distance;
+    });
+  }
   if (scene.deforming) {
     addFcl("fcl_refit", Kind::distance, [&](std::size_t i) {
       adsd::bench::refitObbrss(*refitA, frameA);
@@ -402,6 +431,10 @@ SceneOutcome runScene(const DistanceScene& scene, std::size_t oracleBudget, std:
 
   SceneOutcome out;
   out.oracleQueries = oracleIndex.size();
+  if (treeA && treeA->hierarchy() && treeB->hierarchy()) {
+    out.treeBytesPerTriangle = static_cast<double>(treeA->hierarchy()->bytes() + treeB->hierarchy()->bytes()) /
+                               static_cast<double>(scene.triangleCount());
+  }
   auto median = [&](const std::string& name) {
     for (const auto& m : runs) {
       if (m.name == name) return adsd::bench::median(m.timing.micros);
@@ -589,16 +622,19 @@ int run(const Options& options, const std::string& command) {
     DistanceScene scene = adsd::bench::makeDistanceScene(name, size, fclPlacement);
     SceneOutcome outcome;
     const double seconds = 1e-6 * adsd::bench::microsecondsOf([&] { outcome = runScene(scene, oracleBudget, deformingFclStride); });
-    std::printf("%-18s %7zu triangles, %4zu queries, %2zu oracle queries: ours_exact checksum on them %.15e, "
+    std::printf("%-24s %7zu triangles, %4zu queries, %2zu oracle queries: ours_exact checksum on them %.15e, "
                 "oracle %.15e  %s  (%.1f s)\n",
                 name.c_str(), scene.triangleCount(), scene.queryCount(), outcome.oracleQueries,
                 outcome.oursExactOnOracle, outcome.oracleSum, outcome.oracleAgrees ? "agree" : "DISAGREE", seconds);
+    if (!std::isnan(outcome.treeBytesPerTriangle)) {
+      std::printf("  sub-mesh trees kept between queries: %.1f bytes per triangle\n", outcome.treeBytesPerTriangle);
+    }
     for (const Row& r : outcome.rows) {
-      std::printf("  %-16s %10.3f ms  p90 %10.3f ms  max err %9.2e  violations %zu/%zu  checksum %.12e", r.method.c_str(),
+      std::printf("  %-20s %10.3f ms  p90 %10.3f ms  max err %9.2e  violations %zu/%zu  checksum %.12e", r.method.c_str(),
                   r.medianUs / 1000, r.p90Us / 1000, r.errors.maxError, r.errors.violations, r.errors.queries,
                   r.checksum);
       if (r.family == "ours" && !std::isnan(r.ratioVsFclPrebuilt)) std::printf("  /fcl_prebuilt %.3f", r.ratioVsFclPrebuilt);
-      if (r.family == "ours") std::printf("  /fcl_rebuild %.4f", r.ratioVsFclRebuild);
+      if (r.family == "ours" && !std::isnan(r.ratioVsFclRebuild)) std::printf("  /fcl_rebuild %.4f", r.ratioVsFclRebuild);
       if (r.family == "ours" && !std::isnan(r.ratioVsFclRefit)) std::printf("  /fcl_refit %.4f", r.ratioVsFclRefit);
       std::printf("\n");
     }

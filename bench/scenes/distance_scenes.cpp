@@ -5,6 +5,7 @@
 
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
+#include "adsd/problem_scenes.h"
 #include "adsd/shapes.h"
 #include "mesh_cache.h"
 
@@ -24,7 +25,7 @@ Mesh loadCached(const std::string& fileName) {
 /// A rigid scene: \p count close poses of the pair, placed with the caller's placement.
 DistanceScene rigidScene(std::string name, std::string description, Mesh a, Mesh b, std::uint64_t seed,
                          std::size_t count, const PlacementFactory& placement) {
-  DistanceScene scene{std::move(name), std::move(description), std::move(a), std::move(b), {}, false, {}, {}, 0.0};
+  DistanceScene scene(std::move(name), std::move(description), std::move(a), std::move(b));
   scene.referenceLength = referenceLength(scene.a, scene.b);
   ClosePoseSpec spec;
   spec.count = count;
@@ -61,9 +62,10 @@ SmoothDeformation ripple(SeededRandom& random, double length) {
 
 DistanceScene teddies(std::size_t frames, const PlacementFactory& placement) {
   Mesh bear = loadCached("bear.off");
-  DistanceScene scene{"teddies_deforming",
+  DistanceScene scene("teddies_deforming",
                       "CGAL bear x 2, " + std::to_string(frames) + " frames of a smooth ripple, B swaying close",
-                      bear, bear, {}, true, {}, {}, 0.0};
+                      bear, bear);
+  scene.deforming = true;
   scene.referenceLength = referenceLength(scene.a, scene.b);
   const double length = scene.referenceLength;
 
@@ -89,6 +91,44 @@ DistanceScene teddies(std::size_t frames, const PlacementFactory& placement) {
   return scene;
 }
 
+// The SE(2) problems, as problems/scenes/include/adsd/problem_scenes.h lists them: their robots
+// only turn about z and stay at z = 0. The others are SE(3).
+bool isPlanarProblem(const std::string& problem) {
+  return problem == "office" || problem == "maze" || problem == "thin_wall";
+}
+
+constexpr const char* kProblemPrefix = "problem_";
+
+// FNV-1a: the same seed for a problem on every compiler (std::hash is not specified).
+std::uint64_t stableHash(const std::string& text) {
+  std::uint64_t h = 0xCBF29CE484222325ull;
+  for (unsigned char c : text) h = (h ^ c) * 0x100000001B3ull;
+  return h;
+}
+
+DistanceScene planningScene(const std::string& problem, std::size_t count, const PlacementFactory& placement) {
+  for (shapes::ProblemScene& p : shapes::allProblemScenes()) {
+    if (p.name != problem) continue;
+    // cow_doorway's robot is the real cow, re-centred on its vertex mean as the planner does.
+    Mesh robot = p.robot.empty() ? shapes::centredOnVertexMean(loadCached("cow.off")) : std::move(p.robot.front());
+    DistanceScene scene(kProblemPrefix + problem,
+                        "planning problem " + problem + (isPlanarProblem(problem) ? " (SE(2))" : " (SE(3))") +
+                            ": robot near obstacles",
+                        std::move(robot), std::move(p.environment));
+    scene.planning = true;
+    scene.referenceLength = scene.a.bounds().diagonal().norm();
+    NearObstacleSpec spec;
+    spec.count = count;
+    spec.seed = stableHash(problem);
+    spec.planar = isPlanarProblem(problem);
+    spec.region = scene.b.bounds();
+    const Placement place = placement(scene.a, scene.b);
+    scene.poses = makeNearObstaclePoses(scene.a, scene.b, spec, place.gap);
+    return scene;
+  }
+  throw InputError("unknown planning problem '" + problem + "'");
+}
+
 }  // namespace
 
 void DistanceScene::verticesAt(std::size_t i, std::vector<Vec3>& verticesA, std::vector<Vec3>& verticesB) const {
@@ -103,7 +143,11 @@ void DistanceScene::verticesAt(std::size_t i, std::vector<Vec3>& verticesA, std:
 }
 
 const std::vector<std::string>& distanceSceneNames() {
-  static const std::vector<std::string> names = {"cows", "stick_dragon", "teddies_deforming", "camels", "bunnies"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = {"cows", "stick_dragon", "teddies_deforming", "camels", "bunnies"};
+    for (const shapes::ProblemScene& p : shapes::allProblemScenes()) all.push_back(kProblemPrefix + p.name);
+    return all;
+  }();
   return names;
 }
 
@@ -128,6 +172,9 @@ DistanceScene makeDistanceScene(const std::string& name, const SceneSize& size, 
   if (name == "bunnies") {
     return rigidScene(name, "npm bunny x 2", loadCached("bunny.off"), loadCached("bunny.off"), 0xB0B, size.rigidPoses,
                       placement);
+  }
+  if (name.rfind(kProblemPrefix, 0) == 0) {
+    return planningScene(name.substr(std::char_traits<char>::length(kProblemPrefix)), size.rigidPoses, placement);
   }
   throw InputError("unknown distance scene '" + name + "'");
 }

@@ -11,25 +11,34 @@
 /// |                   |                                          | deformation, B swaying close    |
 /// | camels            | CGAL camel.off × 2 (19 536 each)         | rigid close poses               |
 /// | bunnies           | npm bunny × 2 (3 674 each)               | rigid close poses               |
+/// | problem_NAME      | robot × environment of a shipped planning problem (problems/scenes;  |
+/// |                   | cow_doorway's robot is the cached cow)   | robot states near obstacles     |
 ///
 /// Close poses: gaps log-uniform in [0.1 %, 5 %] of the larger bounding-box diagonal, convex hulls
 /// overlapping (bench/scenes/close_poses.h). Placing them needs a distance and a hull test; the
 /// caller supplies both (the benchmarks use FCL, a test may use the oracle), so the scenes depend
-/// on no method under test.
+/// on no method under test. Planning problems: the robot (mesh A) slides from a random free state
+/// until its clearance is 0.1 %–5 % of its own bounding-box diagonal (near_obstacle_poses.h); the
+/// environment (mesh B) stays at the identity.
 
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "adsd/mesh.h"
 #include "close_poses.h"
+#include "near_obstacle_poses.h"
 #include "smooth_deformation.h"
 
 namespace adsd::bench {
 
 /// \brief One scene: two meshes at rest and the placements of its queries.
 struct DistanceScene {
+  DistanceScene(std::string sceneName, std::string sceneDescription, Mesh meshA, Mesh meshB)
+      : name(std::move(sceneName)), description(std::move(sceneDescription)), a(std::move(meshA)), b(std::move(meshB)) {}
+
   std::string name;
   std::string description;
   Mesh a;  ///< rest shape, mesh frame
@@ -37,10 +46,14 @@ struct DistanceScene {
   /// One per query. For a deforming scene, one per frame (in frame order).
   std::vector<PosePair> poses;
   bool deforming = false;
+  /// A planning problem's robot against its environment: rigid, models built once by any method
+  /// (FCL's per-query rebuild is no fair comparison there and is not run).
+  bool planning = false;
   /// Deforming scenes: frame i shows mesh A displaced by deformA at t = i (and B by deformB).
   SmoothDeformation deformA;
   SmoothDeformation deformB;
-  /// The larger of the two rest bounding-box diagonals: the scale of every tolerance and gap.
+  /// The scale of every tolerance and gap: the larger of the two rest bounding-box diagonals
+  /// (planning problems: the robot's, since clearances are robot-sized).
   double referenceLength = 0.0;
 
   std::size_t queryCount() const { return poses.size(); }
@@ -65,7 +78,8 @@ struct Placement {
 /// \brief Makes the Placement for meshes a and b (called once per scene, with the scene's meshes).
 using PlacementFactory = std::function<Placement(const Mesh& a, const Mesh& b)>;
 
-/// \brief The scene names, in the benchmark's order.
+/// \brief The scene names, in the benchmark's order: the paper's scenes and bunnies, then the
+/// planning problems (problem_NAME for each of adsd::shapes::allProblemScenes()).
 const std::vector<std::string>& distanceSceneNames();
 
 /// \brief Builds scene \p name: loads its meshes from the mesh cache (meshCacheDir()), generates
