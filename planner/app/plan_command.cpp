@@ -20,6 +20,7 @@
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
+#include "commands.h"
 
 namespace adsd::app {
 

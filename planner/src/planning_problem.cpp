@@ -42,7 +42,8 @@ std::shared_ptr<const RigidBodyScene> loadScene(const ProblemFile& file) {
   auto scene = std::make_shared<RigidBodyScene>();
   scene->space = file.space;
   scene->robot.push_back(recentreRobot(loadProblemMesh(file.robotPath, file.robotLocation), file.space));
-  scene->environment.push_back(loadProblemMesh(file.worldPath, file.worldLocation));
+  // One world file, many parts: the broad phase then skips the parts far from the robot.
+  scene->environment = splitIntoParts(loadProblemMesh(file.worldPath, file.worldLocation));
   return scene;
 }
 

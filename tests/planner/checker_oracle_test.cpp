@@ -27,10 +27,10 @@ struct OracleAnswer {
   bool intersecting = false;
 };
 
-OracleAnswer oracleAt(const RigidBodyScene& scene, const Pose& pose) {
+OracleAnswer oracleAt(const SceneFixture& f, const Pose& pose) {
   OracleAnswer a;
-  for (const Mesh& r : scene.robot) {
-    for (const Mesh& e : scene.environment) {
+  for (const Mesh& r : f.scene->robot) {
+    for (const Mesh& e : f.oracleEnvironment) {
       a.distance = std::min(a.distance, oracle::meshDistance(r, pose, e, Pose::Identity()).value);
       a.intersecting = a.intersecting || oracle::meshesIntersect(r, pose, e, Pose::Identity());
     }
@@ -50,7 +50,7 @@ void compareWithOracle(const SceneFixture& f, int states, std::uint64_t seed) {
     const Pose pose = sampler.next();
     poseToState(pose, f.scene->space, state.get());
     const Pose asChecked = poseFromState(state.get(), f.scene->space);  // the state's own rounding
-    const OracleAnswer truth = oracleAt(*f.scene, asChecked);
+    const OracleAnswer truth = oracleAt(f, asChecked);
     // The oracle's distance of intersecting meshes is zero up to its binary128 rounding.
     ASSERT_TRUE(!truth.intersecting || truth.distance <= tolerance)
         << "oracle disagrees with itself, state " << i << ": " << truth.distance;
@@ -105,7 +105,7 @@ TEST(CheckerVersusOracle, BroadPhaseOverSeveralEnvironmentMeshes) {
   // The maze split into two meshes (and the office added far away): the broad phase may skip
   // meshes but must not change any answer.
   SceneFixture f = test::mazeFixture();
-  const Mesh& maze = f.scene->environment.front();
+  const Mesh maze = shapes::mazeScene().environment;
   std::vector<Vec3> left, right;
   std::vector<TriangleIndices> leftT, rightT;
   for (const TriangleIndices& t : maze.triangles()) {
@@ -120,7 +120,24 @@ TEST(CheckerVersusOracle, BroadPhaseOverSeveralEnvironmentMeshes) {
   far.translate(Vec3(100, 0, 0));
   f.scene->environment = {Mesh(left, leftT, "maze left"), Mesh(right, rightT, "maze right"),
                           shapes::merge({shapes::officeScene().environment}, {far})};
+  f.oracleEnvironment = f.scene->environment;
   compareWithOracle(f, 100, 7);
+}
+
+TEST(SplitIntoParts, KeepsEveryTriangleOnce) {
+  const Mesh office = shapes::officeScene().environment;  // 32 separate boxes
+  for (const std::size_t maxParts : {std::size_t{64}, std::size_t{5}, std::size_t{1}}) {
+    const std::vector<Mesh> parts = splitIntoParts(office, maxParts);
+    EXPECT_EQ(parts.size(), std::min<std::size_t>(32, maxParts));
+    std::size_t triangles = 0;
+    Eigen::AlignedBox3d box;
+    for (const Mesh& p : parts) {
+      triangles += p.triangleCount();
+      box.extend(p.bounds());
+    }
+    EXPECT_EQ(triangles, office.triangleCount());
+    EXPECT_TRUE(box.isApprox(office.bounds()));
+  }
 }
 
 TEST(CheckerSettings, ClearanceTypeIsHonest) {

@@ -25,6 +25,9 @@ struct SceneFixture {
   std::shared_ptr<RigidBodyScene> scene;
   ompl::base::SpaceInformationPtr si;
   Eigen::AlignedBox3d volume;
+  /// The environment as generated, unsplit, for the oracle: it places the robot's triangles once
+  /// per call, so one call over the whole mesh is much cheaper than one per part.
+  std::vector<Mesh> oracleEnvironment;
 };
 
 inline SceneFixture makeFixture(const shapes::ProblemScene& generated, RigidBodySpace space,
@@ -33,7 +36,9 @@ inline SceneFixture makeFixture(const shapes::ProblemScene& generated, RigidBody
   f.name = generated.name;
   f.scene = std::make_shared<RigidBodyScene>();
   f.scene->robot = generated.robot;
-  f.scene->environment = {generated.environment};
+  // Split as PlanningProblem splits a loaded world, so the broad phase is exercised as in use.
+  f.scene->environment = splitIntoParts(generated.environment);
+  f.oracleEnvironment = {generated.environment};
   f.scene->space = space;
   f.volume = volume;
   const int dims = space == RigidBodySpace::se2 ? 2 : 3;

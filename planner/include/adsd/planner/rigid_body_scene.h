@@ -3,6 +3,7 @@
 /// \brief What a rigid-body planning problem is made of: robot meshes, environment meshes, and
 /// whether the robot moves in SE(2) or SE(3).
 
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -37,6 +38,17 @@ Eigen::AlignedBox3d environmentBounds(const RigidBodyScene& scene);
 /// \brief Length of the diagonal of the box holding the environment and the robot's reach
 /// (environment box widened by the robot radius): the scene's length scale for tolerances.
 double sceneScale(const RigidBodyScene& scene);
+
+/// Most parts splitIntoParts() makes (count): the broad phase tests every robot part against every
+/// environment part on each query (a ball–box distance, a few ns each), so 64 parts cost well under
+/// a microsecond while letting it skip most of a large scene.
+inline constexpr std::size_t kMaxEnvironmentParts = 64;
+
+/// \brief Splits \p mesh into its connected components (triangles sharing a vertex index), for
+/// the checkers' broad phase; when there are more than \p maxParts, neighbouring components
+/// (ordered along the mesh's longest axis) are grouped into \p maxParts meshes. Every triangle
+/// ends up in exactly one part, so the distance to the parts' union is the distance to the mesh.
+std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts = kMaxEnvironmentParts);
 
 /// \brief Re-centres a robot mesh the OMPL.app way: subtracts the mean of its vertices, with the
 /// z component of that mean kept at zero for SE(2) problems (shared/OMPLAPP-CFG.md).
