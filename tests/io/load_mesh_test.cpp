@@ -221,6 +221,24 @@ TEST(LoadMesh, AsciiStlWithUtf8Name) {
   EXPECT_EQ(mesh.triangleCount(), 1u);
 }
 
+TEST(LoadMesh, AsciiStlWithAnEmptyExtraSolid) {
+  // The empty solid becomes a mesh without faces, which assimp's later steps would reject.
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("two_solids.stl",
+                                       "solid full\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                                       "vertex 0 1 0\nendloop\nendfacet\nendsolid full\nsolid empty\nendsolid empty\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
+TEST(LoadMesh, PlyHeaderLineWithoutCommentKeywordIsIgnored) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("banner.ply",
+                                       "ply\nformat ascii 1.0\nCreated by some exporter\nelement vertex 3\n"
+                                       "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+                                       "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
 TEST(LoadMesh, ColladaNestedNodeTransformsComposeFromTheRoot) {
   TempDir dir;
   // p_root = T_parent * T_child * p: rotate 90 degrees about z first, then translate by (10,0,0).
@@ -303,6 +321,22 @@ TEST(LoadMeshBadInput, TruncatedBinaryStl) {
   EXPECT_NE(header.find("truncated binary STL"), std::string::npos) << header;
 }
 
+TEST(LoadMeshBadInput, BinaryStlOfTheWrongSize) {
+  TempDir dir;
+  const std::string one = binaryStl({{0, 0, 0, 1, 0, 0, 0, 1, 0}}, 1);
+  // Assimp reads binary STL only at exactly 84 + 50 * count bytes.
+  const std::string longer = loadError(dir.write("longer.stl", one + "pad"));
+  EXPECT_NE(longer.find("3 bytes after the 1 triangles"), std::string::npos) << longer;
+  const std::string none = loadError(dir.write("none.stl", binaryStl({}, 0)));
+  EXPECT_NE(none.find("no triangles"), std::string::npos) << none;
+  // A header starting with "solid" does not make a cut-off binary file ASCII.
+  std::string solid = binaryStl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 1, 0, 1, 0, 1, 1}}, 2);
+  solid.replace(0, 12, "solid binary");
+  const std::string cut = loadError(dir.write("solid_cut.stl", solid.substr(0, 120)));
+  EXPECT_NE(cut.find("neither ASCII STL"), std::string::npos) << cut;
+  EXPECT_NE(cut.find("truncated binary STL"), std::string::npos) << cut;
+}
+
 TEST(LoadMeshBadInput, Unparseable) {
   TempDir dir;
   EXPECT_NE(loadError(dir.write("broken.dae", "<?xml version=\"1.0\"?><COLLADA><library_geometries>"))
@@ -310,7 +344,7 @@ TEST(LoadMeshBadInput, Unparseable) {
             std::string::npos);
   const std::string ply = loadError(dir.write("broken.ply", "ply\nformat ascii 1.0\nelement vertex banana\n"));
   EXPECT_NE(ply.find("broken.ply:3: expected 'element <name> <count>'"), std::string::npos) << ply;
-  EXPECT_NE(loadError(dir.write("noise.xyz", std::string("\x01\x02\x03\x04 not a mesh", 17))).find(dir.path("noise.xyz")),
+  EXPECT_NE(loadError(dir.write("noise.xyz", std::string("\x01\x02\x03\x04") + " not a mesh")).find(dir.path("noise.xyz")),
             std::string::npos);
 }
 

@@ -31,21 +31,24 @@ std::string lowerCaseExtension(const std::string& path) {
   return ext;
 }
 
-// ASCII STL starts with "solid" and is text. A binary STL may also start with "solid" (some
-// exporters write it into the free-form header), but its triangle count (whose high bytes are zero
-// below 2^24 triangles) and float data put control bytes within the first few hundred bytes. Bytes
-// >= 0x80 count as text so that a UTF-8 solid name stays ASCII STL.
-bool looksLikeAsciiStl(std::string_view head) {
+bool startsWithSolid(std::string_view head) {
   std::size_t i = 0;
   while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
   static const char kSolid[] = "solid";
   for (std::size_t k = 0; k < 5; ++k, ++i) {
     if (i >= head.size() || std::tolower(static_cast<unsigned char>(head[i])) != kSolid[k]) return false;
   }
-  return std::all_of(head.begin(), head.end(), [](char ch) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    return c >= 0x20 || std::isspace(c);
-  });
+  return true;
+}
+
+/// Offset of the first control byte other than whitespace, or npos. Bytes >= 0x80 count as text
+/// so that a UTF-8 solid name stays ASCII STL.
+std::size_t firstControlByte(std::string_view head) {
+  for (std::size_t i = 0; i < head.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(head[i]);
+    if (c < 0x20 && !std::isspace(c)) return i;
+  }
+  return std::string_view::npos;
 }
 
 /// The first \p count bytes of the file (fewer if it is shorter).
@@ -79,22 +82,39 @@ std::uintmax_t requireReadableFile(const std::string& path) {
   return size;
 }
 
+// ASCII STL starts with "solid" and is text. A binary STL may also start with "solid" (some
+// exporters write it into the free-form header), but its triangle count (whose high bytes are zero
+// below 2^24 triangles) and float data put control bytes within the first few hundred bytes.
+// Assimp 5.2 reads a binary STL only if its size is exactly 84 + 50 * count; anything else it
+// calls "failed to determine STL storage representation", so each case gets its own message.
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes) {
-  if (looksLikeAsciiStl(head.substr(0, kStlSniffBytes))) return;
+  head = head.substr(0, kStlSniffBytes);
+  const bool solid = startsWithSolid(head);
+  const std::size_t control = firstControlByte(head);
+  if (solid && control == std::string_view::npos) return;  // ASCII STL: assimp's parser reports its errors
+
+  const std::string what = solid ? path + ": neither ASCII STL (byte " + std::to_string(control) +
+                                       " is a control character) nor a complete binary STL: "
+                                 : path + ": ";
   if (sizeInBytes < kStlPreambleBytes || head.size() < kStlPreambleBytes) {
-    throw InputError(path + ": truncated binary STL: " + std::to_string(sizeInBytes) +
-                     " bytes, shorter than the " + std::to_string(kStlPreambleBytes) +
-                     "-byte header and triangle count");
+    throw InputError(what + "truncated binary STL: " + std::to_string(sizeInBytes) + " bytes, shorter than the " +
+                     std::to_string(kStlPreambleBytes) + "-byte header and triangle count");
   }
   std::uint32_t promised = 0;
   for (int b = 3; b >= 0; --b) {
     promised = promised << 8 | static_cast<unsigned char>(head[kStlHeaderBytes + static_cast<std::size_t>(b)]);
   }
+  if (promised == 0) throw InputError(what + "the file holds no triangles (the binary STL header promises 0)");
   const std::uintmax_t needed = kStlPreambleBytes + kStlBytesPerTriangle * promised;
   if (sizeInBytes < needed) {
-    throw InputError(path + ": truncated binary STL: the header promises " + std::to_string(promised) +
+    throw InputError(what + "truncated binary STL: the header promises " + std::to_string(promised) +
                      " triangles (" + std::to_string(needed) + " bytes) but the file has " +
                      std::to_string(sizeInBytes) + " bytes");
+  }
+  if (sizeInBytes > needed) {
+    throw InputError(what + "binary STL with " + std::to_string(sizeInBytes - needed) +
+                     " bytes after the " + std::to_string(promised) +
+                     " triangles its header promises (assimp reads binary STL only at the exact size)");
   }
 }
 

@@ -67,9 +67,9 @@ struct Gathered {
   std::uint64_t points = 0;
 };
 
-/// Appends the triangles of \p mesh, placed by \p toRoot, to \p out. Assimp's validation step has
-/// already checked the indices; they are checked again here because reading out of range would be
-/// a crash, not an error message.
+/// Appends the triangles of \p mesh, placed by \p toRoot, to \p out. requireConsistentScene checked
+/// the indices before post-processing; they are checked again here, after it, because reading out
+/// of range would be a crash, not an error message.
 void gatherMesh(const aiMesh& mesh, const Affine& toRoot, const std::string& path, Gathered& out) {
   const std::string meshName = "mesh '" + std::string(mesh.mName.C_Str()) + "'";
   std::uint64_t triangleFaces = 0;
@@ -137,8 +137,93 @@ Gathered gatherScene(const aiScene& scene, const std::string& path) {
   return out;
 }
 
+/// The scene as the loader left it must be safe for the post-processing steps to read: arrays
+/// present where counts say so, face indices and bone weights inside their mesh. We check this
+/// ourselves instead of running assimp's ValidateDataStructure, which also rejects files over
+/// things that do not matter here (an empty extra solid in an STL, animation or material details).
+void requireConsistentScene(const aiScene& scene, const std::string& path) {
+  if (scene.mNumMeshes > 0 && scene.mMeshes == nullptr) throw InputError(path + ": the scene's mesh list is missing");
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* mesh = scene.mMeshes[m];
+    if (mesh == nullptr) throw InputError(path + ": mesh " + std::to_string(m) + " is missing");
+    const std::string meshName = "mesh '" + std::string(mesh->mName.C_Str()) + "'";
+    if ((mesh->mNumVertices > 0 && mesh->mVertices == nullptr) || (mesh->mNumFaces > 0 && mesh->mFaces == nullptr)) {
+      throw InputError(path + ": " + meshName + " lacks the vertices or faces it declares");
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices > 0 && face.mIndices == nullptr) {
+        throw InputError(path + ": " + meshName + " face " + std::to_string(f) + " lacks its indices");
+      }
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= mesh->mNumVertices) {
+          throw InputError(path + ": " + meshName + " face " + std::to_string(f) + " refers to vertex " +
+                           std::to_string(face.mIndices[k]) + " but the mesh has " +
+                           std::to_string(mesh->mNumVertices) + " vertices");
+        }
+      }
+    }
+    if (mesh->mNumBones > 0 && mesh->mBones == nullptr) throw InputError(path + ": " + meshName + " lacks its bones");
+    for (unsigned b = 0; b < mesh->mNumBones; ++b) {
+      const aiBone* bone = mesh->mBones[b];
+      if (bone == nullptr || (bone->mNumWeights > 0 && bone->mWeights == nullptr)) {
+        throw InputError(path + ": " + meshName + " bone " + std::to_string(b) + " is incomplete");
+      }
+      for (unsigned w = 0; w < bone->mNumWeights; ++w) {
+        if (bone->mWeights[w].mVertexId >= mesh->mNumVertices) {
+          throw InputError(path + ": " + meshName + " bone " + std::to_string(b) + " weighs vertex " +
+                           std::to_string(bone->mWeights[w].mVertexId) + " but the mesh has " +
+                           std::to_string(mesh->mNumVertices) + " vertices");
+        }
+      }
+    }
+    if (mesh->mNumAnimMeshes > 0 && mesh->mAnimMeshes == nullptr) {
+      throw InputError(path + ": " + meshName + " lacks its animation meshes");
+    }
+    for (unsigned a = 0; a < mesh->mNumAnimMeshes; ++a) {
+      const aiAnimMesh* anim = mesh->mAnimMeshes[a];
+      if (anim == nullptr || anim->mNumVertices != mesh->mNumVertices) {
+        throw InputError(path + ": " + meshName + " animation mesh " + std::to_string(a) +
+                         " does not match the mesh's vertex count");
+      }
+    }
+  }
+}
+
+/// Removes meshes without faces or vertices (an STL may hold an empty extra solid), which
+/// SortByPType would reject as having no primitive type, and the references nodes hold to them.
+/// The scene belongs to the importer; post-processing edits it in place the same way.
+void dropEmptyMeshes(aiScene& scene) {
+  std::vector<long long> newIndex(scene.mNumMeshes, -1);
+  unsigned kept = 0;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    aiMesh* mesh = scene.mMeshes[m];
+    if (mesh->mNumFaces > 0 && mesh->mNumVertices > 0) {
+      newIndex[m] = kept;
+      scene.mMeshes[kept++] = mesh;
+    } else {
+      delete mesh;
+    }
+  }
+  if (kept == scene.mNumMeshes) return;
+  scene.mNumMeshes = kept;
+  std::vector<aiNode*> pending{scene.mRootNode};
+  while (!pending.empty()) {
+    aiNode* node = pending.back();
+    pending.pop_back();
+    if (node == nullptr) continue;
+    unsigned keptRefs = 0;
+    for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+      const unsigned m = node->mMeshes[i];
+      if (m < newIndex.size() && newIndex[m] >= 0) node->mMeshes[keptRefs++] = static_cast<unsigned>(newIndex[m]);
+    }
+    node->mNumMeshes = keptRefs;
+    for (unsigned c = 0; c < node->mNumChildren; ++c) pending.push_back(node->mChildren[c]);
+  }
+}
+
 /// Faces with at least three corners in the scene as the loader produced it, before
-/// post-processing (which assimp's validation would abort for a scene without meshes).
+/// post-processing.
 std::uint64_t countSurfaceFaces(const aiScene& scene, std::uint64_t& lines, std::uint64_t& points) {
   std::uint64_t surfaces = 0;
   for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
@@ -171,19 +256,18 @@ Mesh loadMeshUnguarded(const std::string& path) {
   if (scene == nullptr) {
     throw InputError(path + ": cannot be parsed: " + oneLine(importer.GetErrorString()));
   }
+  requireConsistentScene(*scene, path);
   std::uint64_t lines = 0, points = 0;
   if (countSurfaceFaces(*scene, lines, points) == 0) throwNoTriangles(path, lines, points);
+  dropEmptyMeshes(const_cast<aiScene&>(*scene));
 
-  // ValidateDataStructure runs first and rejects inconsistent scenes (indices out of range and
-  // the like) before the other steps read them. Triangulate turns polygons into triangles;
-  // JoinIdenticalVertices shares corners (loaders emit three vertices per face); SortByPType
-  // splits mixed meshes so that lines and points land in meshes of their own, which gatherMesh
-  // drops. Node transforms are applied by our own walk, in double precision, rather than by
+  // Triangulate turns polygons into triangles; JoinIdenticalVertices shares corners (loaders emit
+  // three vertices per face); SortByPType splits mixed meshes so that lines and points land in
+  // meshes of their own, which gatherMesh drops. Node transforms are applied by our own walk, in double precision, rather than by
   // PreTransformVertices, which composes them in assimp's float and loses the node names our error
   // messages use. Assimp's defaults for COLLADA <unit> and <up_axis> stay on: that is the frame
   // OMPL.app's assimp loading sees too, and problem files written for it must mean the same to us.
-  const unsigned steps = aiProcess_ValidateDataStructure | aiProcess_Triangulate |
-                         aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
+  const unsigned steps = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
   scene = importer.ApplyPostProcessing(steps);
   if (scene == nullptr) {
     throw InputError(path + ": cannot be parsed: " + oneLine(importer.GetErrorString()));

@@ -7,6 +7,7 @@
 // binary: record by record, list lengths included), and face indices are checked against the
 // vertex count. Anything off is an error naming the line (ASCII) or the element and instance.
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -54,6 +55,14 @@ struct Element {
   long long count = 0;
   std::vector<Property> properties;
 };
+
+/// Element and property names are identifiers. Assimp does not read a name that starts with a
+/// digit as a name: "element 9999999999face 1" becomes a count of 9999999999 (mod 2^32).
+bool isIdentifier(std::string_view name) {
+  const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (name.empty() || !letter(name.front())) return false;
+  return std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9') || c == '-'; });
+}
 
 /// The face corner lists whose values are vertex indices.
 bool isVertexIndexList(const Element& element, const Property& property) {
@@ -103,6 +112,7 @@ class PlyChecker {
         if (t.size() != 3 || !parseInteger(t[2], count) || count < 0 || count > UINT32_MAX) {
           throw InputError(at() + "expected 'element <name> <count>' with a count from 0 to 2^32 - 1");
         }
+        if (!isIdentifier(t[1])) throw InputError(at() + "element name " + quoteToken(t[1]) + " is not an identifier");
         elements_.push_back({std::string(t[1]), count, {}});
       } else if (t[0] == "property") {
         if (elements_.empty()) throw InputError(at() + "a property before any element");
@@ -122,10 +132,11 @@ class PlyChecker {
           throw InputError(at() + "expected 'property <type> <name>' or 'property list <type> <type> <name>'");
         }
         if (p.valueType.bytes == 0) throw InputError(at() + "unknown property type in " + quoteToken(line));
+        if (!isIdentifier(p.name)) throw InputError(at() + "property name " + quoteToken(p.name) + " is not an identifier");
         elements_.back().properties.push_back(p);
-      } else {
-        throw InputError(at() + "unknown PLY header line " + quoteToken(line));
       }
+      // Any other line is ignored, as assimp ignores it (Blender 2.4 wrote its banner without
+      // "comment"; assimp's own test model Wuson.ply has one).
     }
     if (!formatSeen) throw InputError(path_ + ": the PLY header has no format line");
     dataOffset_ = lines_.offset();
