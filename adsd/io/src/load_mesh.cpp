@@ -26,6 +26,18 @@ constexpr double kAffineBottomRowTolerance = 1e-6;
 
 using Affine = Eigen::Affine3d;
 
+std::string oneLine(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+/// A name from the file, fit for a one-line message.
+std::string quoted(const aiString& name) { return "'" + oneLine(name.C_Str()) + "'"; }
+
+
 Affine toAffine(const aiMatrix4x4& m, const std::string& path, const aiNode& node) {
   const double entries[4][4] = {{m.a1, m.a2, m.a3, m.a4},
                                 {m.b1, m.b2, m.b3, m.b4},
@@ -35,7 +47,7 @@ Affine toAffine(const aiMatrix4x4& m, const std::string& path, const aiNode& nod
   for (int r = 0; r < 4; ++r) {
     for (int c = 0; c < 4; ++c) matrix(r, c) = entries[r][c];
   }
-  const std::string nodeName = "node '" + std::string(node.mName.C_Str()) + "'";
+  const std::string nodeName = "node " + quoted(node.mName);
   if (!matrix.allFinite()) throw InputError(path + ": " + nodeName + " has a non-finite transform entry");
   if ((matrix.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > kAffineBottomRowTolerance) {
     throw InputError(path + ": " + nodeName + " has a projective transform (bottom row is not 0 0 0 1)");
@@ -43,14 +55,6 @@ Affine toAffine(const aiMatrix4x4& m, const std::string& path, const aiNode& nod
   Affine affine = Affine::Identity();
   affine.matrix().topRows<3>() = matrix.topRows<3>();
   return affine;
-}
-
-std::string oneLine(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
 }
 
 std::string formatPoint(const aiVector3D& p) {
@@ -71,7 +75,7 @@ struct Gathered {
 /// the indices before post-processing; they are checked again here, after it, because reading out
 /// of range would be a crash, not an error message.
 void gatherMesh(const aiMesh& mesh, const Affine& toRoot, const std::string& path, Gathered& out) {
-  const std::string meshName = "mesh '" + std::string(mesh.mName.C_Str()) + "'";
+  const std::string meshName = "mesh " + quoted(mesh.mName);
   std::uint64_t triangleFaces = 0;
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
     const unsigned n = mesh.mFaces[f].mNumIndices;
@@ -123,7 +127,7 @@ Gathered gatherScene(const aiScene& scene, const std::string& path) {
     for (unsigned i = 0; i < node->mNumMeshes; ++i) {
       const unsigned m = node->mMeshes[i];
       if (m >= scene.mNumMeshes || scene.mMeshes[m] == nullptr) {
-        throw InputError(path + ": node '" + std::string(node->mName.C_Str()) + "' refers to mesh " +
+        throw InputError(path + ": node " + quoted(node->mName) + " refers to mesh " +
                          std::to_string(m) + " which does not exist");
       }
       gatherMesh(*scene.mMeshes[m], toRoot, path, out);
@@ -146,7 +150,7 @@ void requireConsistentScene(const aiScene& scene, const std::string& path) {
   for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
     const aiMesh* mesh = scene.mMeshes[m];
     if (mesh == nullptr) throw InputError(path + ": mesh " + std::to_string(m) + " is missing");
-    const std::string meshName = "mesh '" + std::string(mesh->mName.C_Str()) + "'";
+    const std::string meshName = "mesh " + quoted(mesh->mName);
     if ((mesh->mNumVertices > 0 && mesh->mVertices == nullptr) || (mesh->mNumFaces > 0 && mesh->mFaces == nullptr)) {
       throw InputError(path + ": " + meshName + " lacks the vertices or faces it declares");
     }
