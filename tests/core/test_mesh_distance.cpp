@@ -135,8 +135,10 @@ class MeshDistanceAgainstOracle : public ::testing::Test {
   SceneStats run(const ScenePair& scene, std::uint64_t seed) {
     SeededRandom random(seed);
     SceneStats stats;
-    const Mesh permutedA = permuted(scene.a, random);
-    const Mesh permutedB = permuted(scene.b, random);
+    Mesh permutedA = permuted(scene.a, random);
+    Mesh permutedB = permuted(scene.b, random);
+    if (scene.a.hierarchy() != nullptr) permutedA.buildHierarchy();
+    if (scene.b.hierarchy() != nullptr) permutedB.buildHierarchy();
     std::vector<double> distances;
     DistanceScratch scratch;
 
@@ -222,8 +224,8 @@ class MeshDistanceAgainstOracle : public ::testing::Test {
         check(above || r.status == DistanceStatus::withinThreshold, got.str() + " (status)");
         if (o.value > margin + tol) check(above, got.str() + " (should be above)");
         if (o.value < margin - tol || (intersecting && margin == 0)) check(!above, got.str() + " (should be within)");
-        // distance.h: aboveThreshold means "proven: minimum distance > threshold (lower > threshold)".
-        if (above) check(r.lower > margin, got.str() + " (lower not above the threshold)");
+        // distance.h: aboveThreshold means "proven: minimum distance > threshold (lower >= threshold)".
+        if (above) check(r.lower >= margin && r.upper > margin, got.str() + " (interval not above the threshold)");
         if (above) check(r.lower <= o.value + tol, got.str() + " (lower above the oracle)");
         if (!above) check(r.upper <= margin && r.distance <= margin, got.str() + " (upper above the threshold)");
         if (!above) check(r.distance >= o.value - tol, got.str() + " (distance below the oracle)");
@@ -332,6 +334,20 @@ TEST_F(MeshDistanceAgainstOracle, InterlockedTori) { expectExercised(run(interlo
 TEST_F(MeshDistanceAgainstOracle, KnottedTubeAndStick) { expectExercised(run(knotAndStick(), 202)); }
 TEST_F(MeshDistanceAgainstOracle, HookedCShapes) { expectExercised(run(hookedCShapes(), 203)); }
 TEST_F(MeshDistanceAgainstOracle, ObjectInARoom) { expectExercised(run(objectInRoom(), 204)); }
+
+/// The same scene with both meshes' hierarchies built: queries take the rigid-body path
+/// (adsd/mesh_hierarchy.h) and must give the same guarantees.
+ScenePair withTrees(ScenePair scene) {
+  scene.a.buildHierarchy();
+  scene.b.buildHierarchy();
+  scene.name += " (trees)";
+  return scene;
+}
+
+TEST_F(MeshDistanceAgainstOracle, InterlockedToriWithTrees) { expectExercised(run(withTrees(interlockedTori()), 301)); }
+TEST_F(MeshDistanceAgainstOracle, KnottedTubeAndStickWithTrees) { expectExercised(run(withTrees(knotAndStick()), 302)); }
+TEST_F(MeshDistanceAgainstOracle, HookedCShapesWithTrees) { expectExercised(run(withTrees(hookedCShapes()), 303)); }
+TEST_F(MeshDistanceAgainstOracle, ObjectInARoomWithTrees) { expectExercised(run(withTrees(objectInRoom()), 304)); }
 
 TEST(MeshDistance, BadOptionsAndPosesAreInputErrors) {
   const Mesh box = shapes::box(Vec3(1, 1, 1));

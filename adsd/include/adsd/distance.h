@@ -66,7 +66,8 @@ struct DistanceOptions {
 enum class DistanceStatus {
   exact,           ///< distance is the minimum distance (lower == upper == distance).
   withinTolerance, ///< the minimum distance lies in [lower, upper], upper - lower within tolerance.
-  aboveThreshold,  ///< proven: minimum distance > threshold (lower > threshold).
+  aboveThreshold,  ///< proven: minimum distance > threshold (lower >= threshold: pairs culled at
+                   ///< the threshold count with it as their bound).
   withinThreshold, ///< proven: minimum distance <= threshold (upper <= threshold; distance = upper).
   beyondCap,       ///< proven: minimum distance >= cap (lower == cap, upper may be infinite).
 };

@@ -13,9 +13,10 @@ inline constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 /// Triangle routine: a computed distance at or below this many units of roundoff of the local
 /// coordinate scale (largest coordinate after moving the origin to the first corner of triangle A)
-/// is indistinguishable from contact and reported as exactly 0. About 1e-15 relative: far below the
-/// 1e-10 x diagonal accuracy we promise, far above what a touching pair computes to (a few ulps).
-inline constexpr double kContactSnapUlps = 4.0;
+/// is indistinguishable from contact and reported as exactly 0. About 3.6e-15 relative: far below
+/// the 1e-10 x diagonal accuracy we promise, above what a crossing edge's interpolated point lies
+/// off the other plane (a few ulps; test_triangle_distance's crossing pairs must give exactly 0).
+inline constexpr double kContactSnapUlps = 16.0;
 
 /// Triangle routine: two edge directions count as parallel when |d1 x d2|^2 <= this x |d1|^2 |d2|^2
 /// (i.e. the angle is below ~1e-15 rad). The interior edge–edge candidate is then skipped: the
