@@ -54,10 +54,17 @@ void Query::testAllPairs(const SubMesh& a, const SubMesh& b) {
     const Vec3& p0 = a_.corner(ta, 0);
     const Vec3& p1 = a_.corner(ta, 1);
     const Vec3& p2 = a_.corner(ta, 2);
+    const Vec3 loA = p0.cwiseMin(p1).cwiseMin(p2);
+    const Vec3 hiA = p0.cwiseMax(p1).cwiseMax(p2);
     for (std::uint32_t j = b.t0; j < b.t1 && !done_; ++j) {
       const std::uint32_t tb = orderB_[j];
-      const TrianglePairResult t = triangleDistance(p0, p1, p2, toA(b_.corner(tb, 0)), toA(b_.corner(tb, 1)),
-                                                    toA(b_.corner(tb, 2)));
+      const Vec3 q0 = toA(b_.corner(tb, 0));
+      const Vec3 q1 = toA(b_.corner(tb, 1));
+      const Vec3 q2 = toA(b_.corner(tb, 2));
+      // The boxes' gap first: a pair that cannot matter costs no exact test.
+      const Vec3 gap = (q0.cwiseMin(q1).cwiseMin(q2) - hiA).cwiseMax(loA - q0.cwiseMax(q1).cwiseMax(q2)).cwiseMax(0.0);
+      if (skip(gap.norm() - roundoff_)) continue;
+      const TrianglePairResult t = triangleDistance(p0, p1, p2, q0, q1, q2);
       ++counters_.trianglePairsTested;
       offer(t.pointOnA, t.pointOnB, t.distance, ta, false, tb, false);
     }
@@ -125,9 +132,20 @@ SubMesh Query::nodeB(std::int32_t i) const {
 }
 
 double Query::nodeLowerBound(std::int32_t na, std::int32_t nb) const {
+  // Box A in A's frame, box B in B's: the gap between their projections on a unit axis bounds
+  // the distance of everything inside them from below (a separating-axis test, made
+  // quantitative). The face normals of both boxes are tried, and the bounding spheres.
   const Eigen::AlignedBox3d& boxA = treeA_->nodes()[na].box;
   const Eigen::AlignedBox3d& boxB = treeB_->nodes()[nb].box;
-  return (boxA.center() - toA(boxB.center())).norm() - 0.5 * boxA.diagonal().norm() - 0.5 * boxB.diagonal().norm();
+  const Vec3 halfA = 0.5 * boxA.sizes();
+  const Vec3 halfB = 0.5 * boxB.sizes();
+  const Vec3 offset = toA(boxB.center()) - boxA.center();  // A frame
+  const Vec3 reachB = absRotationBA_ * halfB;                 // B's half extents along A's axes
+  const Vec3 reachA = absRotationBA_.transpose() * halfA;     // A's half extents along B's axes
+  const Vec3 gapsA = offset.cwiseAbs() - halfA - reachB;
+  const Vec3 gapsB = (rotationAB_ * offset).cwiseAbs() - halfB - reachA;
+  const double spheres = offset.norm() - halfA.norm() - halfB.norm();
+  return std::max({spheres, gapsA.maxCoeff(), gapsB.maxCoeff()});
 }
 
 void Query::splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n) {

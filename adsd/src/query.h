@@ -78,7 +78,8 @@ class Query {
   void splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n);
   SubMesh nodeA(std::int32_t i) const;
   SubMesh nodeB(std::int32_t i) const;
-  /// Lower bound of the distance of two tree nodes from their boxes' bounding spheres.
+  /// Lower bound of the distance of two tree nodes from their boxes: the larger of the bounding
+  /// spheres' gap and the separating-axis gaps along the six face normals of the two boxes.
   double nodeLowerBound(std::int32_t na, std::int32_t nb) const;
   void testAllPairs(const SubMesh& a, const SubMesh& b);
   /// Appends the distinct vertices of triangles order[t0, t1) to `list`; returns the sub-mesh.
@@ -126,6 +127,7 @@ class Query {
   Eigen::Matrix3d rotationBA_;   // B frame -> A frame
   Vec3 translationBA_;
   Eigen::Matrix3d rotationAB_;   // directions from A frame into B frame (transpose)
+  Eigen::Matrix3d absRotationBA_;  // |rotationBA_|, for box projections
   double magnitude_ = 0.0;       // largest |coordinate| of either mesh in A's frame
   double roundoff_ = 0.0;        // kBoundSafetyUlps * eps * magnitude_
 
