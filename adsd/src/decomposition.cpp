@@ -132,20 +132,30 @@ SubMesh Query::nodeB(std::int32_t i) const {
 }
 
 double Query::nodeLowerBound(std::int32_t na, std::int32_t nb) const {
-  // Box A in A's frame, box B in B's: the gap between their projections on a unit axis bounds
-  // the distance of everything inside them from below (a separating-axis test, made
-  // quantitative). The face normals of both boxes are tried, and the bounding spheres.
-  const Eigen::AlignedBox3d& boxA = treeA_->nodes()[na].box;
-  const Eigen::AlignedBox3d& boxB = treeB_->nodes()[nb].box;
-  const Vec3 halfA = 0.5 * boxA.sizes();
-  const Vec3 halfB = 0.5 * boxB.sizes();
-  const Vec3 offset = toA(boxB.center()) - boxA.center();  // A frame
-  const Vec3 reachB = absRotationBA_ * halfB;                 // B's half extents along A's axes
-  const Vec3 reachA = absRotationBA_.transpose() * halfA;     // A's half extents along B's axes
-  const Vec3 gapsA = offset.cwiseAbs() - halfA - reachB;
-  const Vec3 gapsB = (rotationAB_ * offset).cwiseAbs() - halfB - reachA;
-  const double spheres = offset.norm() - halfA.norm() - halfB.norm();
-  return std::max({spheres, gapsA.maxCoeff(), gapsB.maxCoeff()});
+  // Box A in A's frame, box B in B's: the gap between their projections on a unit axis bounds the
+  // distance of everything inside them from below (the separating-axis test of oriented boxes,
+  // made quantitative). All 15 axes are tried: the faces of both boxes and the 9 edge pairs.
+  const OrientedBox& boxA = treeA_->nodes()[na].box;
+  const OrientedBox& boxB = treeB_->nodes()[nb].box;
+  const Eigen::Matrix3d c = boxA.axes.transpose() * (rotationBA_ * boxB.axes);  // B's axes in A's box frame
+  const Eigen::Matrix3d absC = c.cwiseAbs();
+  const Vec3 t = boxA.axes.transpose() * (toA(boxB.center) - boxA.center);
+  const Vec3& ha = boxA.half;
+  const Vec3& hb = boxB.half;
+  const Vec3 gapsA = t.cwiseAbs() - ha - absC * hb;
+  const Vec3 gapsB = (c.transpose() * t).cwiseAbs() - hb - absC.transpose() * ha;
+  double best = std::max(gapsA.maxCoeff(), gapsB.maxCoeff());
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const Vec3 axis = Vec3::Unit(i).cross(c.col(j));
+      const double norm = axis.norm();
+      if (norm < 1e-6) continue;  // (nearly) parallel edges: the face axes cover them
+      const double reachA = axis.cwiseAbs().dot(ha);
+      const double reachB = (c.transpose() * axis).cwiseAbs().dot(hb);
+      best = std::max(best, (std::abs(axis.dot(t)) - reachA - reachB) / norm);
+    }
+  }
+  return best;
 }
 
 void Query::splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n) {

@@ -1,9 +1,73 @@
 #include "adsd/mesh_hierarchy.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
+#include <Eigen/Eigenvalues>
+
+#include "adsd/tolerances.h"
+
 namespace adsd {
+
+namespace {
+
+/// Widens a box by a few units of roundoff of its coordinates, so that rounding in the
+/// projections never leaves a vertex outside it (its bounds prune with the query's own roundoff
+/// allowance on top).
+void pad(OrientedBox& box) {
+  const double slack = 8.0 * tolerance::kEpsilon * (box.center.cwiseAbs().maxCoeff() + box.half.maxCoeff());
+  box.half.array() += slack;
+}
+
+/// The extents of `points` along fixed axes.
+template <class Points>
+void fitExtents(OrientedBox& box, const Points& points) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (const Vec3& p : points) {
+    const Vec3 q = box.axes.transpose() * p;
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  box.center = box.axes * (0.5 * (lo + hi));
+  box.half = 0.5 * (hi - lo);
+  pad(box);
+}
+
+/// The box of a point set along its principal axes (eigenvectors of the covariance).
+OrientedBox principalBox(const std::vector<Vec3>& points) {
+  OrientedBox box;
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) covariance += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(covariance);
+  box.axes = solver.eigenvectors();
+  // Degenerate spreads (a point, a segment) can leave the solver's axes unusable: fall back to
+  // the mesh axes, which bound just as correctly.
+  if (!box.axes.allFinite() || std::abs(std::abs(box.axes.determinant()) - 1.0) > 1e-6) {
+    box.axes.setIdentity();
+  }
+  fitExtents(box, points);
+  return box;
+}
+
+/// The 8 corners of a box.
+std::array<Vec3, 8> corners(const OrientedBox& box) {
+  std::array<Vec3, 8> c;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 sign((k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0, (k & 4) ? 1.0 : -1.0);
+    c[k] = box.center + box.axes * sign.cwiseProduct(box.half);
+  }
+  return c;
+}
+
+}  // namespace
 
 MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
   order_.resize(mesh.triangleCount());
@@ -20,12 +84,12 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
   Node node;
   node.t0 = t0;
   node.t1 = t1;
-  Eigen::AlignedBox3d centroids;
+  std::vector<Vec3> points;
+  points.reserve(3 * (t1 - t0));
   for (std::uint32_t i = t0; i < t1; ++i) {
-    const std::uint32_t t = order_[i];
-    for (int k = 0; k < 3; ++k) node.box.extend(mesh.corner(t, k));
-    centroids.extend(mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2));
+    for (int k = 0; k < 3; ++k) points.push_back(mesh.corner(order_[i], k));
   }
+  node.box = principalBox(points);
   if (t1 - t0 <= kLeafTriangles) {
     node.v0 = static_cast<std::uint32_t>(leafVertices_.size());
     for (std::uint32_t i = t0; i < t1; ++i) {
@@ -40,13 +104,14 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
     nodes_[index] = node;
     return index;
   }
-  int axis = 0;
-  centroids.sizes().maxCoeff(&axis);
+  // Halve at the median centroid along the box's longest axis.
+  int longest = 0;
+  node.box.half.maxCoeff(&longest);
+  const Vec3 axis = node.box.axes.col(longest);
+  auto key = [&](std::uint32_t t) { return axis.dot(mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)); };
   const std::uint32_t mid = t0 + (t1 - t0) / 2;
-  std::nth_element(order_.begin() + t0, order_.begin() + mid, order_.begin() + t1, [&](std::uint32_t s, std::uint32_t t) {
-    return mesh.corner(s, 0)[axis] + mesh.corner(s, 1)[axis] + mesh.corner(s, 2)[axis] <
-           mesh.corner(t, 0)[axis] + mesh.corner(t, 1)[axis] + mesh.corner(t, 2)[axis];
-  });
+  std::nth_element(order_.begin() + t0, order_.begin() + mid, order_.begin() + t1,
+                   [&](std::uint32_t s, std::uint32_t t) { return key(s) < key(t); });
   node.left = build(mesh, t0, mid, marks);
   node.right = build(mesh, mid, t1, marks);
   nodes_[index] = node;
@@ -56,12 +121,18 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
 void MeshHierarchy::refit(const Mesh& mesh) {
   // Children come after their parent in nodes_, so a backward sweep sees children first.
   for (std::size_t i = nodes_.size(); i-- > 0;) {
+    // The axes stay; the extents are fitted anew (to the leaf's vertices, or to the corners of
+    // the children's refitted boxes, which contain everything below).
     Node& n = nodes_[i];
-    n.box.setEmpty();
     if (n.isLeaf()) {
-      for (std::uint32_t k = n.v0; k < n.v1; ++k) n.box.extend(mesh.vertices()[leafVertices_[k]]);
+      std::vector<Vec3> points;
+      for (std::uint32_t k = n.v0; k < n.v1; ++k) points.push_back(mesh.vertices()[leafVertices_[k]]);
+      fitExtents(n.box, points);
     } else {
-      n.box = nodes_[n.left].box.merged(nodes_[n.right].box);
+      std::vector<Vec3> points;
+      for (const Vec3& c : corners(nodes_[n.left].box)) points.push_back(c);
+      for (const Vec3& c : corners(nodes_[n.right].box)) points.push_back(c);
+      fitExtents(n.box, points);
     }
   }
 }

@@ -48,9 +48,7 @@ struct DistanceScratch::Buffers {
 namespace detail {
 
 /// Largest d.x over a box (eq. 4 for a box): what bounds a subtree in the trees' branch and bound.
-inline double boxSupport(const Eigen::AlignedBox3d& box, const Vec3& d) {
-  return d.dot(box.center()) + d.cwiseAbs().dot(0.5 * box.sizes());
-}
+inline double boxSupport(const OrientedBox& box, const Vec3& d) { return box.support(d); }
 
 /// A sub-mesh: triangles order[t0, t1) and, from scratch, their distinct vertices
 /// vertices[v0, v1); with a hierarchy, the tree node it is (node >= 0).
