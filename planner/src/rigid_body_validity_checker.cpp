@@ -28,6 +28,7 @@ RigidBodyValidityChecker::RigidBodyValidityChecker(const ompl::base::SpaceInform
       for (std::uint32_t v : t) radius = std::max(radius, (part.vertices()[v] - centre).norm());
     }
     robotBallCentres_.push_back(centre);
+    robotBoxes_.push_back(part.bounds());
     robotBallRadii_.push_back(radius);
   }
   for (const Mesh& part : scene_->environment) environmentBoxes_.push_back(part.bounds());
@@ -37,10 +38,17 @@ void RigidBodyValidityChecker::broadPhase(const Pose& robotPose, std::vector<Pai
   pairs.clear();
   for (std::size_t r = 0; r < robotBallCentres_.size(); ++r) {
     const Vec3 centre = robotPose * robotBallCentres_[r];
+    // World box around the posed body-frame box: centre moved, half extents through |R|.
+    const Vec3 boxCentre = robotPose * robotBoxes_[r].center();
+    const Vec3 boxHalf = robotPose.linear().cwiseAbs() * (0.5 * robotBoxes_[r].sizes());
     for (std::size_t e = 0; e < environmentBoxes_.size(); ++e) {
-      // Distance from the robot part's ball to the environment part's box: no point of the one is
-      // nearer than this to any point of the other.
-      const double lower = std::max(0.0, environmentBoxes_[e].exteriorDistance(centre) - robotBallRadii_[r]);
+      // Both are distances between sets that contain the two meshes, so neither exceeds the
+      // meshes' distance.
+      const double ballBound = environmentBoxes_[e].exteriorDistance(centre) - robotBallRadii_[r];
+      const Vec3 gap = ((environmentBoxes_[e].center() - boxCentre).cwiseAbs() - boxHalf -
+                        0.5 * environmentBoxes_[e].sizes())
+                           .cwiseMax(0.0);
+      const double lower = std::max({0.0, ballBound, gap.norm()});
       pairs.push_back({lower, r, e});
     }
   }

@@ -6,12 +6,12 @@
 namespace adsd::shapes {
 
 // A square tunnel along x (inside y, z in [-2, 2], x in [-5.5, 5.5]) crossed by three plates at
-// x = -1.8, 0, 1.8. Each plate has a 2.6 × 0.5 slot, turned about x by 0°, 60° and 120°. The robot
+// x = -1.8, 0, 1.8. Each plate has a 2.8 × 0.7 slot, turned about x by 0°, 60° and 120°. The robot
 // is a flat bar (0.6 × 2.2 × 0.24) that fits a slot only when aligned with it, so it must twist
 // between the plates. Start (-4, 0, 0), goal (4, 0, 0) turned by 120° about x.
 ProblemScene twistedPassageScene() {
   constexpr double half = 2.0, t = 0.2, length = 5.5;
-  constexpr double plate = 3.2, slotHalfWidth = 1.3, slotHalfHeight = 0.25, plateHalfThickness = 0.1;
+  constexpr double plate = 3.2, slotHalfWidth = 1.4, slotHalfHeight = 0.35, plateHalfThickness = 0.1;
   SceneParts parts;
   parts.addBox(Vec3(-length, -half - t, -half - t), Vec3(length, half + t, -half));
   parts.addBox(Vec3(-length, -half - t, half), Vec3(length, half + t, half + t));

@@ -23,8 +23,11 @@ namespace adsd::planner {
 /// collision). All const methods are thread-safe and take no lock: subclasses keep their per-query
 /// memory per thread and the counters are atomic.
 ///
-/// Broad phase: each robot mesh is enclosed in a body-frame ball, each environment mesh in a
-/// world-frame box. A mesh pair whose ball–box distance exceeds the current bound (the safety
+/// Broad phase: each robot mesh is enclosed in a body-frame ball and a body-frame box, each
+/// environment mesh in a world-frame box. The larger of the ball–box distance and the distance
+/// between the environment box and the world box around the posed robot box is a lower bound on
+/// the pair's distance (the box suits long thin robots, the ball turned ones). A mesh pair whose
+/// bound exceeds the current bound (the safety
 /// margin for validity, the best distance so far for clearance) cannot change the answer and is
 /// skipped; pairs are visited nearest first so the bound tightens early.
 class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
@@ -89,6 +92,7 @@ class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
   double scale_;
   std::vector<Vec3> robotBallCentres_;  ///< body frame
   std::vector<double> robotBallRadii_;
+  std::vector<Eigen::AlignedBox3d> robotBoxes_;  ///< body frame
   std::vector<Eigen::AlignedBox3d> environmentBoxes_;  ///< world frame
   mutable QueryCounters counters_;
 };
