@@ -16,4 +16,8 @@ int distanceCommand(const std::vector<std::string>& args);
 /// \brief `adsd plan [PROBLEM.cfg] [options]` (plan_command.cpp, the planner's).
 int planCommand(const std::vector<std::string>& args);
 
+/// \brief `adsd benchmark [PROBLEM.cfg] [options]` (benchmark_command.cpp): OMPL's benchmark for each
+/// checker and motion validator, its log, SQLite database and plots.
+int benchmarkCommand(const std::vector<std::string>& args);
+
 }  // namespace adsd::app

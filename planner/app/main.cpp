@@ -21,6 +21,8 @@ const Command kCommands[] = {
      adsd::app::distanceCommand},
     {"plan", "solve a motion-planning problem file (OMPL.app .cfg) with the adsd validity checker",
      adsd::app::planCommand},
+    {"benchmark", "OMPL benchmark of a problem file for each checker and motion validator: log, database, plots",
+     adsd::app::benchmarkCommand},
 };
 
 void printUsage(std::ostream& out) {

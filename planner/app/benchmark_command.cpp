@@ -1,0 +1,743 @@
+// `adsd benchmark [PROBLEM.cfg] [--checker adsd|fcl|both] [--motion discrete|certified|both]
+//                 [--runs N | --run-range A:B] [--seed S] [--time SECONDS] [--out DIR]
+//                 [--no-plots | --log-only]`
+//
+// Runs OMPL's benchmark (ompl::tools::Benchmark) on a problem file's [benchmark] and [planner]
+// sections for every checker × motion-validator combination asked for, and writes
+//   DIR/STEM.log        the OMPL benchmark log: one experiment, each planner once per combination,
+//                       named "LABEL [CHECKER, MOTION]" (so Planner Arena shows them side by side);
+//   DIR/STEM.db         the SQLite database `ompl_benchmark_statistics STEM.log -d STEM.db` writes;
+//   DIR/STEM.*.png      plots drawn from that database (bench/planning/plot_benchmark.py), which
+//                       also prints a summary table (not with --no-plots: the table only);
+// where STEM is the problem's name, plus ".runs-A-B" for a run range and ".seed-S" for a seed, so
+// that every shard writes its own files (`ompl_benchmark_statistics` merges many logs into one
+// database). --log-only writes the log and stops (shards on machines without Python).
+//
+// Each run records, beside OMPL's own properties: the checker and the motion validator, the run's
+// index, and the planner's own queries: validity checks and clearance queries with their time,
+// motion checks. These counters are read when the planner's solve returns, before the benchmark's
+// bookkeeping (solution checks, clearance, simplification) queries the checker again.
+//
+// Exit status: 0 done; 1 a tool failed or no run was recorded; 2 bad input (one line naming the
+// file, line and key, or the option).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ompl/base/Planner.h>
+#include <ompl/tools/benchmark/Benchmark.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include "adsd/error.h"
+#include "adsd/planner/planner_registry.h"
+#include "adsd/planner/planning_problem.h"
+#include "adsd/planner/problem_file.h"
+#include "adsd/planner/shipped_problems.h"
+#include "commands.h"
+
+namespace adsd::app {
+
+namespace {
+
+using namespace adsd::planner;
+namespace fs = std::filesystem;
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+namespace ot = ompl::tools;
+
+const char* kUsage =
+    "usage: adsd benchmark [PROBLEM.cfg] [--checker adsd|fcl|both] [--motion discrete|certified|both]\n"
+    "                      [--runs N | --run-range A:B] [--seed S] [--time SECONDS] [--out DIR]\n"
+    "                      [--no-plots | --log-only]\n"
+    "\n"
+    "Runs OMPL's benchmark on the problem's [benchmark] and [planner] sections for each checker and\n"
+    "motion validator (default: both of each), writes DIR/STEM.log, converts it with\n"
+    "ompl_benchmark_statistics into DIR/STEM.db and plots it (bench/planning/plot_benchmark.py).\n"
+    "  --runs N          runs per planner and combination (default: [benchmark] run_count)\n"
+    "  --run-range A:B   this shard's runs: indices A to B-1 (seed A+1 unless --seed)\n"
+    "  --seed S          OMPL's random seed (1 to 4294967295; default: OMPL's own)\n"
+    "  --time SECONDS    time limit per run (default: [benchmark] time_limit)\n"
+    "  --out DIR         output directory (default: [benchmark] output, else the current one)\n"
+    "  --no-plots        database and summary table, no plots\n"
+    "  --log-only        the log only (merge shards' logs later with ompl_benchmark_statistics)\n";
+
+/// OMPL's RNG takes no seed 0. A shard of runs [A, B) without --seed is seeded with
+/// A + kShardSeedOffset: shards get different seeds, and a shard run again gets the same one.
+constexpr std::uint64_t kShardSeedOffset = 1;
+
+/// The interpreter for the plotting script: Debian's, which has matplotlib (the team's rule: not
+/// whichever python3 comes first on PATH).
+const char* const kPython = "/usr/bin/python3";
+
+/// OMPL's program that turns benchmark logs into a SQLite database (Debian package ompl-demos).
+const char* const kStatisticsProgram = "ompl_benchmark_statistics";
+
+#ifndef ADSD_PLOT_BENCHMARK_SCRIPT
+#define ADSD_PLOT_BENCHMARK_SCRIPT ""
+#endif
+
+// ---- arguments ---------------------------------------------------------------------------------
+
+struct BenchmarkArguments {
+  std::string problem;
+  std::vector<CheckerKind> checkers{CheckerKind::adsd, CheckerKind::fcl};
+  std::vector<MotionKind> motions{MotionKind::discrete, MotionKind::certified};
+  std::optional<unsigned> runs;
+  std::optional<std::pair<unsigned, unsigned>> runRange;  ///< [first, end)
+  std::optional<std::uint64_t> seed;
+  std::optional<double> seconds;
+  std::optional<std::string> outDirectory;
+  bool plots = true;
+  bool logOnly = false;
+};
+
+/// A whole decimal number in [min, max]; \p what names the option in the message.
+std::uint64_t parseWhole(const std::string& text, const std::string& what, std::uint64_t min, std::uint64_t max) {
+  const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  errno = 0;
+  const unsigned long long value = digits ? std::strtoull(text.c_str(), nullptr, 10) : 0;
+  if (!digits || errno == ERANGE || value < min || value > max) {
+    throw InputError(what + ": expected a whole number from " + std::to_string(min) + " to " + std::to_string(max) +
+                     ", got '" + text + "'");
+  }
+  return value;
+}
+
+BenchmarkArguments parseArguments(const std::vector<std::string>& args) {
+  constexpr std::uint64_t kMaxRuns = std::numeric_limits<unsigned>::max();  // OMPL counts runs in unsigned int
+  constexpr std::uint64_t kMaxSeed = std::numeric_limits<std::uint32_t>::max();
+  BenchmarkArguments a;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw InputError(arg + " needs a value");
+      return args[++i];
+    };
+    if (arg == "--checker") {
+      const std::string& v = value();
+      if (v == "adsd") {
+        a.checkers = {CheckerKind::adsd};
+      } else if (v == "fcl") {
+        a.checkers = {CheckerKind::fcl};
+      } else if (v == "both") {
+        a.checkers = {CheckerKind::adsd, CheckerKind::fcl};
+      } else {
+        throw InputError("--checker: expected adsd, fcl or both, got '" + v + "'");
+      }
+    } else if (arg == "--motion") {
+      const std::string& v = value();
+      if (v == "discrete") {
+        a.motions = {MotionKind::discrete};
+      } else if (v == "certified") {
+        a.motions = {MotionKind::certified};
+      } else if (v == "both") {
+        a.motions = {MotionKind::discrete, MotionKind::certified};
+      } else {
+        throw InputError("--motion: expected discrete, certified or both, got '" + v + "'");
+      }
+    } else if (arg == "--runs") {
+      a.runs = static_cast<unsigned>(parseWhole(value(), "--runs", 1, kMaxRuns));
+    } else if (arg == "--run-range") {
+      const std::string& v = value();
+      const auto colon = v.find(':');
+      if (colon == std::string::npos) throw InputError("--run-range: expected A:B (runs A to B-1), got '" + v + "'");
+      const auto first = parseWhole(v.substr(0, colon), "--run-range (A of A:B)", 0, kMaxRuns - 1);
+      const auto end = parseWhole(v.substr(colon + 1), "--run-range (B of A:B)", 1, kMaxRuns);
+      if (end <= first) throw InputError("--run-range: expected A < B (runs A to B-1), got '" + v + "'");
+      a.runRange = std::make_pair(static_cast<unsigned>(first), static_cast<unsigned>(end));
+    } else if (arg == "--seed") {
+      a.seed = parseWhole(value(), "--seed", 1, kMaxSeed);
+    } else if (arg == "--time") {
+      const std::string& v = value();
+      char* end = nullptr;
+      const double s = std::strtod(v.c_str(), &end);
+      if (v.empty() || end != v.c_str() + v.size() || !(s > 0.0) || !(s < 1e7)) {
+        throw InputError("--time: expected seconds > 0, got '" + v + "'");
+      }
+      a.seconds = s;
+    } else if (arg == "--out") {
+      a.outDirectory = value();
+      if (a.outDirectory->empty()) throw InputError("--out: expected a directory, got ''");
+    } else if (arg == "--no-plots") {
+      a.plots = false;
+    } else if (arg == "--log-only") {
+      a.logOnly = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw InputError("unknown option '" + arg + "' (adsd benchmark --help lists them)");
+    } else if (a.problem.empty()) {
+      a.problem = arg;
+    } else {
+      throw InputError("more than one problem file ('" + a.problem + "', '" + arg + "')");
+    }
+  }
+  if (a.runs && a.runRange) throw InputError("--runs and --run-range: give one (a range's size is its run count)");
+  if (a.logOnly && !a.plots) throw InputError("--log-only and --no-plots: give one (--log-only draws nothing)");
+  if (a.problem.empty()) a.problem = defaultProblemFile();
+  return a;
+}
+
+const char* name(CheckerKind k) { return k == CheckerKind::adsd ? "adsd" : "fcl"; }
+const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" : "certified"; }
+
+// ---- measuring the planner's own queries ---------------------------------------------------------
+
+/// \brief Runs another planner unchanged and calls \p atSolveEnd the moment its solve returns.
+///
+/// Why: ompl::tools::Benchmark calls the post-run event only after its bookkeeping on the solution
+/// (it checks the path twice, the second time at four times the resolution, measures its
+/// clearance, simplifies it and measures again), and all of that queries the same checker. Counters
+/// read at the end of solve are the planner's own queries; read in the post-run event they would
+/// include the bookkeeping. Everything else is forwarded: the planner plans exactly as itself, its
+/// parameters are the wrapped planner's (so the log's settings are its settings), and so are its
+/// progress properties.
+class MeasuredPlanner final : public ob::Planner {
+ public:
+  MeasuredPlanner(ob::PlannerPtr planner, const std::string& label, std::function<void()> atSolveEnd)
+      : ob::Planner(planner->getSpaceInformation(), label),
+        planner_(std::move(planner)),
+        atSolveEnd_(std::move(atSolveEnd)) {
+    specs_ = planner_->getSpecs();
+    params_.include(planner_->params());
+    for (const auto& property : planner_->getPlannerProgressProperties()) {
+      addPlannerProgressProperty(property.first, property.second);
+    }
+  }
+
+  ob::PlannerStatus solve(const ob::PlannerTerminationCondition& ptc) override {
+    // Also when the planner throws: Benchmark catches and records the run, and the counts then are
+    // what the planner spent before it failed.
+    struct AtExit {
+      std::function<void()>& call;
+      ~AtExit() { call(); }
+    } atExit{atSolveEnd_};
+    return planner_->solve(ptc);
+  }
+  void setProblemDefinition(const ob::ProblemDefinitionPtr& pdef) override {
+    ob::Planner::setProblemDefinition(pdef);
+    planner_->setProblemDefinition(pdef);
+  }
+  void clear() override {
+    ob::Planner::clear();
+    planner_->clear();
+  }
+  void clearQuery() override {
+    ob::Planner::clearQuery();
+    planner_->clearQuery();
+  }
+  void setup() override {
+    ob::Planner::setup();
+    if (!planner_->isSetup()) planner_->setup();
+  }
+  void checkValidity() override { planner_->checkValidity(); }
+  void getPlannerData(ob::PlannerData& data) const override { planner_->getPlannerData(data); }
+  void printProperties(std::ostream& out) const override {
+    out << "Benchmarked as " << getName() << '\n';
+    planner_->printProperties(out);
+  }
+  void printSettings(std::ostream& out) const override { planner_->printSettings(out); }
+
+ private:
+  ob::PlannerPtr planner_;
+  std::function<void()> atSolveEnd_;
+};
+
+/// The planner's own queries in one run: the counters when its solve returned.
+struct RunQueries {
+  bool captured = false;
+  QueryCounts queries;
+  std::uint64_t motionChecks = 0;
+  std::uint64_t motionsRejected = 0;
+  std::optional<std::uint64_t> certifiedSteps;  ///< certified validator only
+};
+
+/// One checker × motion validator: its own problem (checker, validator, SimpleSetup) and benchmark.
+struct Combination {
+  CheckerKind checker = CheckerKind::adsd;
+  MotionKind motion = MotionKind::discrete;
+  std::unique_ptr<PlanningProblem> problem;
+  std::unique_ptr<ot::Benchmark> benchmark;
+  /// Written by the planning thread when solve returns; read in the post-run event, which runs
+  /// after Benchmark has joined that thread.
+  RunQueries atSolveEnd;
+  /// The runs gathered over the one-run calls of Benchmark::benchmark.
+  ot::Benchmark::CompleteExperiment gathered;
+
+  std::string label() const { return std::string(name(checker)) + ", " + name(motion); }
+};
+
+void captureQueries(Combination& c) {
+  RunQueries& r = c.atSolveEnd;
+  r.queries = c.problem->checker()->counts();
+  if (const auto& certified = c.problem->certifiedValidator()) {
+    const MotionCounts m = certified->counts();
+    r.motionChecks = m.motions;
+    r.motionsRejected = m.rejected;
+    r.certifiedSteps = m.clearanceSteps;
+  } else {
+    // OMPL's DiscreteMotionValidator counts in plain (non-atomic) integers: exact for one planning
+    // thread, approximate for planners that check motions from several (PRM).
+    const ob::MotionValidatorPtr& validator = c.problem->spaceInformation()->getMotionValidator();
+    r.motionChecks = validator->getCheckedMotionCount();
+    r.motionsRejected = validator->getInvalidMotionCount();
+    r.certifiedSteps.reset();
+  }
+  r.captured = true;
+}
+
+/// A REAL property's text, with every digit of the double (ompl::toString keeps six).
+std::string real(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+/// Our run properties, named by OMPL's convention ("name TYPE"; ompl_benchmark_statistics makes
+/// "name" a column of the runs table with that SQL type). Times are seconds, as OMPL's.
+void addRunProperties(const Combination& c, unsigned runIndex, ot::Benchmark::RunProperties& run) {
+  run["checker STRING"] = name(c.checker);
+  run["motion validator STRING"] = name(c.motion);
+  run["run index INTEGER"] = std::to_string(runIndex);
+  if (const auto& certified = c.problem->certifiedValidator()) {
+    // OMPL's "valid segment fraction" reads the base class's counters, which the certified
+    // validator does not write (they are not atomic); give the same fraction from its own counts,
+    // over the same span as OMPL's (every motion check since the run began, bookkeeping included).
+    const MotionCounts m = certified->counts();
+    run["valid segment fraction REAL"] =
+        real(m.motions == 0 ? 0.0 : static_cast<double>(m.motions - m.rejected) / static_cast<double>(m.motions));
+  }
+  const RunQueries& r = c.atSolveEnd;
+  if (!r.captured) return;  // solve never ran; Benchmark has said why
+  const QueryCounts& q = r.queries;
+  run["validity checks INTEGER"] = std::to_string(q.validityChecks);
+  run["clearance queries INTEGER"] = std::to_string(q.clearanceQueries);
+  run["validity check time REAL"] = real(q.validitySeconds);
+  run["clearance query time REAL"] = real(q.clearanceSeconds);
+  // A mean over no queries is left out (NULL in the database), never written as 0.
+  if (q.validityChecks > 0) run["mean validity check time REAL"] = real(q.meanValiditySeconds());
+  if (q.clearanceQueries > 0) run["mean clearance query time REAL"] = real(q.meanClearanceSeconds());
+  run["motion checks INTEGER"] = std::to_string(r.motionChecks);
+  run["motions rejected INTEGER"] = std::to_string(r.motionsRejected);
+  if (r.certifiedSteps) run["certified clearance steps INTEGER"] = std::to_string(*r.certifiedSteps);
+  // The share of the planning time spent in our queries. Query times are summed over threads, so
+  // a planner that plans on several threads can exceed 1.
+  const auto time = run.find("time REAL");
+  if (time != run.end()) {
+    const double planningSeconds = std::strtod(time->second.c_str(), nullptr);
+    if (planningSeconds > 0.0 && std::isfinite(planningSeconds)) {
+      run["query time fraction REAL"] = real((q.validitySeconds + q.clearanceSeconds) / planningSeconds);
+    }
+  }
+}
+
+// ---- progress ----------------------------------------------------------------------------------
+
+/// \brief A progress bar on stderr: redrawn in place on a terminal, a line per tenth otherwise.
+///
+/// OMPL's own bar (Request::displayProgress) starts over at every call of Benchmark::benchmark;
+/// the runs here are one call each (interleaved across combinations), so the bar is ours.
+class ProgressBar {
+ public:
+  explicit ProgressBar(std::size_t total) : total_(total), terminal_(isatty(STDERR_FILENO) != 0) {}
+
+  void starting(const std::string& what) {
+    current_ = what;
+    if (terminal_) draw();
+  }
+  void finished() {
+    ++done_;
+    if (terminal_) {
+      draw();
+    } else if (done_ * 10 / total_ != (done_ - 1) * 10 / total_ || done_ == total_) {
+      std::cerr << "adsd benchmark: " << done_ << "/" << total_ << " runs done\n";
+    }
+  }
+  void close() {
+    if (terminal_) std::cerr << '\n';
+  }
+
+ private:
+  void draw() {
+    constexpr std::size_t kWidth = 30;
+    const std::size_t filled = done_ * kWidth / total_;
+    std::string line = "\r[" + std::string(filled, '#') + std::string(kWidth - filled, '.') + "] " +
+                       std::to_string(done_) + "/" + std::to_string(total_) + "  " + current_;
+    constexpr std::size_t kLine = 110;  // keep it on one line of a usual terminal
+    if (line.size() > kLine) line.resize(kLine);
+    line.resize(kLine, ' ');
+    std::cerr << line << std::flush;
+  }
+
+  std::size_t total_;
+  std::size_t done_ = 0;
+  bool terminal_;
+  std::string current_;
+};
+
+// ---- the experiment and its log ----------------------------------------------------------------
+
+/// Adds the one run of each planner that a call of Benchmark::benchmark recorded to \p into (the
+/// first call gives everything else too: names, settings, set-up text, machine).
+void appendRuns(ot::Benchmark::CompleteExperiment& into, const ot::Benchmark::CompleteExperiment& call) {
+  if (into.planners.empty()) {
+    into = call;
+    return;
+  }
+  for (std::size_t i = 0; i < into.planners.size() && i < call.planners.size(); ++i) {
+    auto& p = into.planners[i];
+    const auto& q = call.planners[i];
+    p.runs.insert(p.runs.end(), q.runs.begin(), q.runs.end());
+    p.runsProgressData.insert(p.runsProgressData.end(), q.runsProgressData.begin(), q.runsProgressData.end());
+  }
+}
+
+/// \brief Writes an experiment in OMPL's log format with OMPL's own writer
+/// (Benchmark::saveResultsToStream), given the experiment instead of recording it.
+class ExperimentLog : public ot::Benchmark {
+ public:
+  ExperimentLog(og::SimpleSetup& setup, CompleteExperiment experiment) : ot::Benchmark(setup) {
+    exp_ = std::move(experiment);
+  }
+};
+
+/// Writes \p text producer's output to \p path through a temporary file renamed on success, so a
+/// failure leaves nothing half-written.
+void writeFileAtomically(const fs::path& path, const std::function<bool(std::ostream&)>& write) {
+  const fs::path temporary = path.string() + ".tmp";
+  {
+    std::ofstream out(temporary);
+    if (!out || !write(out) || !(out << std::flush)) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw InputError("cannot write '" + path.string() + "'");
+    }
+  }
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) throw InputError("cannot write '" + path.string() + "': " + error.message());
+}
+
+// ---- other programs ----------------------------------------------------------------------------
+
+/// The program's path when it is an executable file in a directory of PATH.
+std::optional<std::string> findOnPath(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  std::istringstream directories(path != nullptr ? path : "");
+  std::string directory;
+  while (std::getline(directories, directory, ':')) {
+    const std::string candidate = (directory.empty() ? std::string(".") : directory) + "/" + program;
+    if (::access(candidate.c_str(), X_OK) == 0 && fs::is_regular_file(candidate)) return candidate;
+  }
+  return std::nullopt;
+}
+
+/// Runs \p argv (argv[0] a path) and returns its exit status, -1 when it could not run or was
+/// killed. With \p stdoutToStderr its standard output goes to our standard error (its progress
+/// chatter, while our standard output keeps the results).
+int runProgram(const std::vector<std::string>& argv, bool stdoutToStderr) {
+  std::vector<char*> pointers;
+  for (const std::string& s : argv) pointers.push_back(const_cast<char*>(s.c_str()));
+  pointers.push_back(nullptr);
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child < 0) return -1;
+  if (child == 0) {
+    if (stdoutToStderr) ::dup2(STDERR_FILENO, STDOUT_FILENO);
+    ::execv(pointers[0], pointers.data());
+    std::fprintf(stderr, "adsd benchmark: cannot run %s: %s\n", pointers[0], std::strerror(errno));
+    ::_exit(127);
+  }
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string quoted(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
+/// A tool we need is missing or failed: exit status 1, not 2 (the input was fine).
+struct ToolFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// ---- the command -------------------------------------------------------------------------------
+
+/// Letters, digits, '.', '-' and '_' of \p name; anything else becomes '_' (file names).
+std::string fileStem(const std::string& name) {
+  std::string s = name.empty() ? std::string("benchmark") : name;
+  for (char& ch : s) {
+    const bool keep = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '.' ||
+                      ch == '-' || ch == '_';
+    if (!keep) ch = '_';
+  }
+  return s;
+}
+
+/// The file's planner entries; a file without any benchmarks RRTConnect, as `adsd plan` plans with it.
+std::vector<PlannerEntry> plannersOf(const ProblemFile& file) {
+  if (!file.planners.empty()) return file.planners;
+  std::cerr << "adsd benchmark: note: " << file.path << " has no [planner] entry; benchmarking rrtconnect\n";
+  PlannerEntry rrtconnect;
+  rrtconnect.name = "rrtconnect";
+  rrtconnect.label = "rrtconnect";
+  return {rrtconnect};
+}
+
+/// Sets a planner parameter; false when OMPL rejects the value, which it says by returning false
+/// (with a warning of its own, silenced: ours names the file and line) or, for numbers that do not
+/// parse, by throwing ompl::Exception.
+bool setQuietly(ob::Planner& planner, const Setting& s) {
+  const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+  ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
+  bool accepted = false;
+  try {
+    accepted = planner.params().setParam(s.key, s.value);
+  } catch (const std::exception&) {
+    accepted = false;
+  }
+  ompl::msg::setLogLevel(level);
+  return accepted;
+}
+
+/// A planner of \p entry on \p si with the entry's parameters; warnings only when \p warn (they are
+/// the same for every combination).
+ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, const ob::SpaceInformationPtr& si, bool warn) {
+  ob::PlannerPtr planner = makePlanner(entry.name, si);
+  if (!planner) throw InputError(entry.location.describe() + ": no planner named '" + entry.name + "'");
+  for (const Setting& s : entry.parameters) {
+    if (!planner->params().hasParam(s.key)) {
+      if (warn) {
+        std::cerr << "adsd benchmark: warning: " << s.location.describe() << ": " << entry.name
+                  << " has no parameter '" << s.key << "', ignored\n";
+      }
+    } else if (!setQuietly(*planner, s)) {
+      throw InputError(s.location.describe() + ": " + entry.name + " rejected the value '" + s.value + "'");
+    }
+  }
+  return planner;
+}
+
+int benchmark(const std::vector<std::string>& args) {
+  const BenchmarkArguments a = parseArguments(args);
+  const ProblemFile file = readProblemFile(a.problem);
+  for (const std::string& w : file.warnings) std::cerr << "adsd benchmark: warning: " << w << '\n';
+  if (file.benchmark.savePaths && *file.benchmark.savePaths != "none") {
+    std::cerr << "adsd benchmark: warning: " << file.path
+              << ": key 'benchmark.save_paths': saving paths is not supported, ignored\n";
+  }
+
+  // The tools first: a missing one must stop us before the runs, not after them.
+  std::string statistics;
+  const std::string plotter = ADSD_PLOT_BENCHMARK_SCRIPT;
+  if (!a.logOnly) {
+    const auto found = findOnPath(kStatisticsProgram);
+    if (!found) {
+      throw ToolFailure(std::string(kStatisticsProgram) +
+                        " is not on PATH (Debian package ompl-demos); --log-only writes the log without it");
+    }
+    statistics = *found;
+    if (::access(kPython, X_OK) != 0) throw ToolFailure(std::string(kPython) + " is missing (Debian package python3)");
+    if (plotter.empty() || !fs::is_regular_file(plotter)) {
+      throw ToolFailure("the plotting script '" + plotter + "' is missing (bench/planning/plot_benchmark.py)");
+    }
+  }
+
+  // Which runs, and the seed: set before anything draws a random number (OMPL seeds every new
+  // generator from one seeded generator).
+  const unsigned firstRun = a.runRange ? a.runRange->first : 0;
+  const ot::Benchmark::Request defaults;
+  const unsigned runCount = a.runRange ? a.runRange->second - a.runRange->first
+                                       : a.runs.value_or(static_cast<unsigned>(file.benchmark.runCount.value_or(
+                                             static_cast<int>(defaults.runCount))));
+  std::optional<std::uint64_t> seed = a.seed;
+  if (!seed && a.runRange) seed = a.runRange->first + kShardSeedOffset;
+  if (seed) ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(*seed));
+
+  ot::Benchmark::Request request;
+  request.maxTime = a.seconds.value_or(file.benchmark.timeLimit.value_or(defaults.maxTime));
+  request.maxMem = file.benchmark.memoryLimit.value_or(defaults.maxMem);
+  request.runCount = 1;  // one run per call: the combinations take turns run by run
+  request.displayProgress = false;
+  request.saveConsoleOutput = false;  // OMPL would write ompl_HOST_DATE.console into the current directory
+  request.simplify = file.benchmark.simplify.value_or(defaults.simplify);
+
+  // Everything that can be wrong with the input is found here, before any file is written.
+  const std::vector<PlannerEntry> entries = plannersOf(file);
+  std::vector<std::unique_ptr<Combination>> combinations;
+  unsigned currentRun = 0;
+  std::unique_ptr<ProgressBar> progress;
+  for (const CheckerKind checker : a.checkers) {
+    for (const MotionKind motion : a.motions) {
+      auto c = std::make_unique<Combination>();
+      c->checker = checker;
+      c->motion = motion;
+      CheckingOptions options;
+      options.checker = checker;
+      options.motion = motion;
+      c->problem = std::make_unique<PlanningProblem>(file, options);
+      const bool first = combinations.empty();
+      if (first) {
+        for (const std::string& w : c->problem->warnings()) std::cerr << "adsd benchmark: warning: " << w << '\n';
+      }
+      c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), file.name);
+      Combination* self = c.get();
+      for (const PlannerEntry& entry : entries) {
+        ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->spaceInformation(), first);
+        const std::string label = (entry.label != entry.name ? entry.label : planner->getName()) + " [" + c->label() + "]";
+        c->benchmark->addPlanner(
+            std::make_shared<MeasuredPlanner>(planner, label, [self] { captureQueries(*self); }));
+      }
+      c->benchmark->setPreRunEvent([self, &currentRun, &progress, runCount](const ob::PlannerPtr& planner) {
+        // Benchmark has just reset the discrete validator's counters; ours are reset here.
+        self->problem->checker()->resetCounts();
+        if (const auto& certified = self->problem->certifiedValidator()) certified->resetCounts();
+        self->atSolveEnd = RunQueries{};
+        progress->starting("run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount) + "  " +
+                           planner->getName());
+      });
+      c->benchmark->setPostRunEvent(
+          [self, &currentRun, &progress, firstRun](const ob::PlannerPtr&, ot::Benchmark::RunProperties& run) {
+            addRunProperties(*self, firstRun + currentRun, run);
+            progress->finished();
+          });
+      combinations.push_back(std::move(c));
+    }
+  }
+
+  const fs::path directory = a.outDirectory ? fs::path(*a.outDirectory)
+                                            : (file.benchmark.output ? fs::path(*file.benchmark.output) : fs::path("."));
+  std::string stem = fileStem(file.name);
+  if (a.runRange) stem += ".runs-" + std::to_string(a.runRange->first) + "-" + std::to_string(a.runRange->second);
+  if (a.seed) stem += ".seed-" + std::to_string(*a.seed);
+  std::error_code error;
+  fs::create_directories(directory, error);
+  if (error || !fs::is_directory(directory) || ::access(directory.c_str(), W_OK) != 0) {
+    throw InputError("--out: cannot write in directory '" + directory.string() + "'" +
+                     (error ? ": " + error.message() : std::string()));
+  }
+  const fs::path logPath = directory / (stem + ".log");
+  const fs::path databasePath = directory / (stem + ".db");
+
+  const std::size_t plannerCount = entries.size();
+  std::printf("benchmark   %s (%s, %s): %zu planner(s) x %zu combination(s) x %u run(s)%s, %g s and %g MB per run\n",
+              file.name.c_str(), file.space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)", a.problem.c_str(), plannerCount,
+              combinations.size(), runCount,
+              a.runRange ? (" (runs " + std::to_string(firstRun) + " to " + std::to_string(firstRun + runCount - 1) + ")").c_str()
+                         : "",
+              request.maxTime, request.maxMem);
+  std::printf("seed        %llu%s\n", static_cast<unsigned long long>(ompl::RNG::getSeed()),
+              seed ? (a.seed ? " (--seed)" : " (first run + 1)") : " (OMPL's choice)");
+  std::fflush(stdout);
+
+  // The runs. Combinations take turns run by run, starting one further along each time, so that a
+  // machine that slows down or speeds up (other jobs on shared cores) affects all of them alike.
+  progress = std::make_unique<ProgressBar>(static_cast<std::size_t>(runCount) * combinations.size() * plannerCount);
+  const auto started = std::chrono::steady_clock::now();
+  for (currentRun = 0; currentRun < runCount; ++currentRun) {
+    for (std::size_t k = 0; k < combinations.size(); ++k) {
+      Combination& c = *combinations[(currentRun + k) % combinations.size()];
+      c.benchmark->benchmark(request);
+      appendRuns(c.gathered, c.benchmark->getRecordedExperimentData());
+    }
+  }
+  progress->close();
+  const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  // One experiment: every combination's planners side by side.
+  ot::Benchmark::CompleteExperiment experiment = combinations.front()->gathered;
+  experiment.name = file.name;
+  experiment.runCount = runCount;
+  experiment.totalDuration = totalSeconds;
+  experiment.seed = ompl::RNG::getSeed();
+  experiment.planners.clear();
+  experiment.setupInfo.clear();
+  std::size_t recorded = 0;
+  for (const auto& c : combinations) {
+    experiment.setupInfo += "==== adsd benchmark: checker " + std::string(name(c->checker)) + ", motion validator " +
+                            name(c->motion) + "\n" + c->gathered.setupInfo;
+    for (const auto& planner : c->gathered.planners) {
+      recorded += planner.runs.size();
+      experiment.planners.push_back(planner);
+    }
+  }
+  const std::size_t expected = static_cast<std::size_t>(runCount) * combinations.size() * plannerCount;
+  if (recorded != expected) {
+    std::cerr << "adsd benchmark: warning: " << expected - recorded << " of " << expected
+              << " runs were not recorded (OMPL reported an error for them)\n";
+  }
+  if (recorded == 0) throw ToolFailure("no run was recorded");
+
+  ExperimentLog log(combinations.front()->problem->setup(), std::move(experiment));
+  writeFileAtomically(logPath, [&log](std::ostream& out) { return log.saveResultsToStream(out); });
+  std::printf("log         %s (%zu runs in %.1f s)\n", logPath.c_str(), recorded, totalSeconds);
+  if (a.logOnly) return 0;
+
+  // The database, through a temporary name: ompl_benchmark_statistics writes it in place.
+  const std::string temporaryDatabase = databasePath.string() + ".tmp";
+  fs::remove(temporaryDatabase, error);
+  const std::vector<std::string> convert = {statistics, logPath.string(), "-d", temporaryDatabase};
+  if (runProgram(convert, true) != 0 || !fs::is_regular_file(temporaryDatabase)) {
+    fs::remove(temporaryDatabase, error);
+    throw ToolFailure("'" + quoted(convert) + "' failed");
+  }
+  fs::rename(temporaryDatabase, databasePath, error);
+  if (error) throw ToolFailure("cannot write '" + databasePath.string() + "': " + error.message());
+  std::printf("database    %s\n", databasePath.c_str());
+  std::fflush(stdout);
+
+  std::vector<std::string> draw = {kPython, plotter, databasePath.string(), "--out", directory.string(), "--prefix", stem};
+  if (!a.plots) draw.push_back("--no-plots");
+  if (runProgram(draw, false) != 0) throw ToolFailure("'" + quoted(draw) + "' failed");
+  return 0;
+}
+
+}  // namespace
+
+/// \brief Entry point of `adsd benchmark`; \p args are the arguments after "benchmark".
+int benchmarkCommand(const std::vector<std::string>& args) {
+  ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << kUsage;
+    return 0;
+  }
+  try {
+    return benchmark(args);
+  } catch (const InputError& e) {
+    std::cerr << "adsd benchmark: error: " << e.what() << '\n';
+    return 2;
+  } catch (const ToolFailure& e) {
+    std::cerr << "adsd benchmark: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "adsd benchmark: internal error: " << e.what() << '\n';
+    return 1;
+  }
+}
+
+}  // namespace adsd::app
