@@ -103,6 +103,7 @@ void randomMotions(const SceneFixture& f, int motions, std::uint64_t seed) {
   test::PoseSampler sampler(f, seed);
   ob::ScopedState<> a(f.si), b(f.si), s(f.si);
   int accepted = 0, discreteOnly = 0, tried = 0;
+  std::uint64_t certifiedQueries = 0, discreteQueries = 0;  // spent on the same motions
   constexpr int kSamplesPerMotion = 60;
   while (tried < motions) {
     poseToState(sampler.next(), f.scene->space, a.get());
@@ -112,8 +113,14 @@ void randomMotions(const SceneFixture& f, int motions, std::uint64_t seed) {
     f.si->getStateSpace()->interpolate(a.get(), s.get(), 0.15, b.get());
     if (!checker->isValid(b.get())) continue;
     ++tried;
+    const QueryCounts before = checker->counts();
     const bool byCertified = certified.checkMotion(a.get(), b.get());
+    const QueryCounts between = checker->counts();
     const bool byDiscrete = discrete.checkMotion(a.get(), b.get());
+    const QueryCounts after = checker->counts();
+    certifiedQueries += (between.validityChecks - before.validityChecks) +
+                        (between.clearanceQueries - before.clearanceQueries);
+    discreteQueries += after.validityChecks - between.validityChecks;
     if (!byCertified) {
       discreteOnly += byDiscrete;
       continue;
@@ -124,8 +131,9 @@ void randomMotions(const SceneFixture& f, int motions, std::uint64_t seed) {
       ASSERT_FALSE(oracleCollides(f, s.get())) << f.name << ": certified motion collides at " << k;
     }
   }
-  std::printf("[%s] %d motions: certified accepted %d; discrete accepted %d more\n", f.name.c_str(), motions, accepted,
-              discreteOnly);
+  std::printf("[%s] %d motions: certified accepted %d with %llu queries; discrete accepted %d more, %llu queries\n",
+              f.name.c_str(), motions, accepted, static_cast<unsigned long long>(certifiedQueries), discreteOnly,
+              static_cast<unsigned long long>(discreteQueries));
   EXPECT_GT(accepted, motions / 5) << "the sample must contain accepted motions";
 }
 
