@@ -101,7 +101,13 @@ def group_runs(runs):
             g.checker = str(r["checker"])
         if r.get("motion_validator"):
             g.motion = str(r["motion_validator"])
-    return list(groups.values())
+    # Side by side: each planner's combinations together, ours beside FCL's (order of appearance).
+    ordered = list(groups.values())
+    order = {}
+    for g in ordered:
+        for field in ("problem", "label", "motion", "checker"):
+            order.setdefault((field, getattr(g, field)), len(order))
+    return sorted(ordered, key=lambda g: tuple(order[(f, getattr(g, f))] for f in ("problem", "label", "motion", "checker")))
 
 
 def median(values):
@@ -116,6 +122,11 @@ def fmt(value, digits=3):
     if value == 0:
         return "0"
     return "%.*g" % (digits, value)
+
+
+def count(value):
+    """A median of counts: whole numbers, a half where the median falls between two runs."""
+    return "–" if value is None else ("%d" % value if value == int(value) else "%.1f" % value)
 
 
 def summary(groups):
@@ -134,9 +145,9 @@ def summary(groups):
                 g.label, g.checker or "–", g.motion or "–", len(g.runs), g.solved(),
                 100.0 * g.solved() / len(g.runs), fmt(median(g.values("time"))),
                 fmt(median(g.values(g.clearance_column(), solved_only=True))),
-                fmt(median(g.values("validity_checks")), 6),
+                count(median(g.values("validity_checks"))),
                 fmt(validity * MICROSECONDS if validity is not None else None),
-                fmt(median(g.values("clearance_queries")), 6),
+                count(median(g.values("clearance_queries"))),
                 fmt(clearance * MICROSECONDS if clearance is not None else None),
                 fmt(median(g.values("query_time_fraction")))))
         lines.append("")
@@ -153,7 +164,7 @@ def summary(groups):
                     fmt(ratio(theirs.pooled_mean("clearance_query_time", "clearance_queries"),
                               ours.pooled_mean("clearance_query_time", "clearance_queries")))))
         if ratios:
-            lines += ["FCL ÷ adsd, same runs (above 1: adsd faster):", "",
+            lines += ["FCL ÷ adsd in this benchmark (above 1: adsd faster):", "",
                       "| planner | motion | median time | mean validity check | mean clearance query |",
                       "|---|---|---:|---:|---:|"] + ratios + [""]
     return "\n".join(lines)
