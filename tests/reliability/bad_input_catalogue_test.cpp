@@ -1,0 +1,171 @@
+// Issue 7's bad-input catalogue at the library level: the entries that tests/io and tests/planner
+// do not already pin. Each must raise adsd::InputError (the one documented type; any other
+// exception fails the test) with one line naming the file, the line and the key.
+//
+// Already covered elsewhere, not repeated here: missing / empty / truncated / unparseable mesh
+// files, no triangles, lines or points only, NaN and infinite coordinates, indices out of range
+// (tests/io load_mesh_test.cpp); 13 and 15 numbers, non-unit quaternions (pose_file_test.cpp);
+// missing keys, duplicate sections and keys, wrong types, syntax errors, binary garbage
+// (tests/planner problem_file_test.cpp); a robot file that does not exist, a start outside the
+// bounds or in collision, a planner name OMPL lacks (planning_problem_test.cpp).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <typeinfo>
+
+#include "adsd/error.h"
+#include "adsd/planner/planner_registry.h"
+#include "adsd/planner/planning_problem.h"
+#include "adsd/planner/problem_file.h"
+
+namespace adsd::planner {
+namespace {
+
+/// A directory of the test's own (parallel ctest runs share nothing), removed afterwards.
+class Scratch {
+ public:
+  Scratch() {
+    std::random_device entropy;
+    root_ = std::filesystem::temp_directory_path() /
+            ("adsd-reliability-" + std::to_string(entropy()) + "-" + std::to_string(entropy()));
+    std::filesystem::create_directories(root_);
+  }
+  ~Scratch() {
+    std::error_code ignored;
+    std::filesystem::remove_all(root_, ignored);
+  }
+  std::string write(const std::string& name, const std::string& text) const {
+    const std::string path = (root_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+ private:
+  std::filesystem::path root_;
+};
+
+const char* kBoxFaces = "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+/// The robot (a 0.2 box) and a world of two boxes, x in [-1, -0.5] and [0.5, 1].
+void writeMeshes(const Scratch& dir) {
+  dir.write("robot.obj", std::string("v -0.1 -0.1 -0.1\nv 0.1 -0.1 -0.1\nv 0.1 0.1 -0.1\nv -0.1 0.1 -0.1\n"
+                                     "v -0.1 -0.1 0.1\nv 0.1 -0.1 0.1\nv 0.1 0.1 0.1\nv -0.1 0.1 0.1\n") +
+                             kBoxFaces);
+  dir.write("world.obj", std::string("v -1 -1 -1\nv -0.5 -1 -1\nv -0.5 1 -1\nv -1 1 -1\n"
+                                     "v -1 -1 1\nv -0.5 -1 1\nv -0.5 1 1\nv -1 1 1\n") +
+                             kBoxFaces +
+                             "v 0.5 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv 0.5 1 -1\nv 0.5 -1 1\nv 1 -1 1\nv 1 1 1\nv 0.5 1 1\n"
+                             "f 9 12 11 10\nf 13 14 15 16\nf 9 10 14 13\nf 10 11 15 14\nf 11 12 16 15\nf 12 9 13 16\n");
+}
+
+/// An SE(2) problem in the gap between the world's boxes; line 1 is [problem], the goal's keys
+/// are on lines 7-9.
+std::string problemText(const std::string& robot, const std::string& goal) {
+  return "[problem]\nrobot = " + robot + "\nworld = world.obj\nstart.x = 0\nstart.y = -0.5\nstart.theta = 0\n" + goal +
+         "volume.min.x = -2\nvolume.min.y = -2\nvolume.max.x = 2\nvolume.max.y = 2\n";
+}
+
+/// Builds the problem from \p cfg and returns the InputError's message; any other outcome fails.
+std::string problemError(const std::string& cfg) {
+  try {
+    PlanningProblem problem(readProblemFile(cfg), CheckingOptions{});
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+    EXPECT_EQ(message.rfind(cfg, 0), 0u) << "starts with the file: " << message;
+    return message.substr(cfg.size());
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "expected adsd::InputError, got " << typeid(e).name() << ": " << e.what();
+    return "";
+  }
+  ADD_FAILURE() << "no error for " << cfg;
+  return "";
+}
+
+TEST(BadInputCatalogue, TheValidProblemBuilds) {
+  Scratch dir;
+  writeMeshes(dir);
+  const std::string cfg = dir.write("good.cfg", problemText("robot.obj", "goal.x = 0\ngoal.y = 0.5\ngoal.theta = 0\n"));
+  EXPECT_NO_THROW(PlanningProblem(readProblemFile(cfg), CheckingOptions{}));
+}
+
+TEST(BadInputCatalogue, GoalOutsideTheBounds) {
+  Scratch dir;
+  writeMeshes(dir);
+  const std::string cfg = dir.write("t.cfg", problemText("robot.obj", "goal.x = 2.5\ngoal.y = 0\ngoal.theta = 0\n"));
+  EXPECT_EQ(problemError(cfg), ":7: key 'problem.goal.x': the goal state is outside the bounds");
+}
+
+TEST(BadInputCatalogue, GoalInCollision) {
+  Scratch dir;
+  writeMeshes(dir);
+  const std::string cfg = dir.write("t.cfg", problemText("robot.obj", "goal.x = -0.5\ngoal.y = 0\ngoal.theta = 0.3\n"));
+  const std::string message = problemError(cfg);
+  EXPECT_EQ(message.rfind(":7: key 'problem.goal.x': the goal state is in collision", 0), 0u) << message;
+}
+
+TEST(BadInputCatalogue, MeshErrorsThroughAProblemFileNameTheKeyAndTheMesh) {
+  Scratch dir;
+  writeMeshes(dir);
+  const std::string goal = "goal.x = 0\ngoal.y = 0.5\ngoal.theta = 0\n";
+  const std::string inf = dir.write("inf.obj", "v 0 0 0\nv 0.1 0 0\nv inf 0.1 0\nf 1 2 3\n");
+  std::string message = problemError(dir.write("inf.cfg", problemText("inf.obj", goal)));
+  EXPECT_EQ(message.rfind(":2: key 'problem.robot': " + inf + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+  const std::string lines = dir.write("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n");
+  message = problemError(dir.write("lines.cfg", problemText("lines.obj", goal)));
+  EXPECT_EQ(message.rfind(":2: key 'problem.robot': " + lines + ": the file holds no triangles", 0), 0u) << message;
+}
+
+// DISABLED: a bug in adsd/io (reported to the lead; fix there, then enable). loadMesh runs
+// assimp's JoinIdenticalVertices before it checks coordinates, and a vertex with a NaN compares
+// "identical" to an earlier one (every comparison with NaN is false, so the distance test never
+// says "different"): the NaN vertex is silently replaced, and the file loads as a degenerate
+// triangle. Here the third vertex is NaN: 1 triangle on 2 vertices, no error. tests/io's NaN test
+// passes because its NaN vertex comes second. Reproducer:
+//   printf 'v 0 0 0\nv 1 0 0\nv nan 0.5 0.7\nf 1 2 3\n' > nan.obj; adsd distance nan.obj nan.obj  (exit 0)
+TEST(BadInputCatalogue, DISABLED_NanCoordinateIsReportedWhereverTheVertexIs) {
+  Scratch dir;
+  writeMeshes(dir);
+  const std::string goal = "goal.x = 0\ngoal.y = 0.5\ngoal.theta = 0\n";
+  const std::string nan = dir.write("nan.obj", "v 0 0 0\nv 0.1 0 0\nv nan 0.1 0\nf 1 2 3\n");
+  const std::string message = problemError(dir.write("nan.cfg", problemText("nan.obj", goal)));
+  EXPECT_EQ(message.rfind(":2: key 'problem.robot': " + nan + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+}
+
+// DISABLED: a bug in planner/src/planning_problem.cpp (reported to the lead; enable once fixed).
+// OMPL's ParamSet::setParam throws std::runtime_error ("Failed converting string to real number")
+// for a value that is not a number instead of returning false, so the InputError branch is never
+// reached: the library lets a foreign exception out, and `adsd plan` reports an "internal error"
+// with exit status 1 instead of 2. Reproducer: any valid cfg plus the line
+//   longest_valid_segment_fraction = lots
+TEST(BadInputCatalogue, DISABLED_AValueOmplRejectsNamesTheKey) {
+  Scratch dir;
+  writeMeshes(dir);
+  const std::string cfg =
+      dir.write("t.cfg", problemText("robot.obj", "goal.x = 0\ngoal.y = 0.5\ngoal.theta = 0\n") +
+                             "longest_valid_segment_fraction = lots\n");
+  const std::string message = problemError(cfg);
+  EXPECT_EQ(message.rfind(":14: key 'problem.longest_valid_segment_fraction'", 0), 0u) << message;
+}
+
+TEST(BadInputCatalogue, APlannerNameOmplLacksIsNoPlannerNotAnException) {
+  Scratch dir;
+  writeMeshes(dir);
+  const std::string cfg = dir.write("t.cfg", problemText("robot.obj", "goal.x = 0\ngoal.y = 0.5\ngoal.theta = 0\n") +
+                                                 "[planner]\nteleport =\nrrtconnect =\n");
+  const ProblemFile file = readProblemFile(cfg);
+  // Documented: an unknown [planner] entry is a warning with its line, and the entry is dropped.
+  ASSERT_EQ(file.planners.size(), 1u);
+  EXPECT_EQ(file.planners[0].name, "rrtconnect");
+  ASSERT_EQ(file.warnings.size(), 1u);
+  EXPECT_EQ(file.warnings[0].rfind(cfg + ":15: key 'planner.teleport'", 0), 0u) << file.warnings[0];
+  PlanningProblem problem(file, CheckingOptions{});
+  EXPECT_EQ(makePlanner("teleport", problem.spaceInformation()), nullptr);
+}
+
+}  // namespace
+}  // namespace adsd::planner
