@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 
 #include "adsd/error.h"
+#include "adsd/io/load_mesh.h"
 #include "adsd/planner/fcl_validity_checker.h"
 #include "adsd/planner/mesh_validity_checker.h"
 #include "adsd/shapes.h"
@@ -110,6 +112,19 @@ TEST(CheckerVersusOracle, ThinWall) { compareWithOracle(test::thinWallFixture(),
 TEST(CheckerVersusOracle, BugTrap) { compareWithOracle(test::bugTrapFixture(), 60, 4); }
 TEST(CheckerVersusOracle, TwistedPassage) { compareWithOracle(test::twistedPassageFixture(), 150, 5); }
 TEST(CheckerVersusOracle, AlphaPuzzle) { compareWithOracle(test::alphaPuzzleFixture(), 10, 6); }
+
+TEST(CheckerVersusOracle, CowDoorwayWithTheRealModel) {
+  // The cow comes from the real-model cache (problems/data/fetch_meshes.sh); without it, skip.
+  const char* dataDir = std::getenv("ADSD_DATA_DIR");
+  const char* home = std::getenv("HOME");
+  const std::string cow = (dataDir != nullptr && *dataDir != '\0') ? std::string(dataDir) + "/cow.off"
+                          : home != nullptr                        ? std::string(home) + "/.cache/adsd/meshes/cow.off"
+                                                                   : std::string();
+  if (cow.empty() || !std::filesystem::exists(cow)) GTEST_SKIP() << "no " << cow << ": run problems/data/fetch_meshes.sh";
+  shapes::ProblemScene scene = shapes::cowDoorwayScene();
+  scene.robot = {recentreRobot(io::loadMesh(cow), RigidBodySpace::se3)};
+  compareWithOracle(test::makeFixture(scene, RigidBodySpace::se3, {Vec3(-2, -1, -1), Vec3(2, 1, 1)}), 10, 9);
+}
 
 TEST(CheckerVersusOracle, BroadPhaseOverSeveralEnvironmentMeshes) {
   // The maze split into two meshes (and the office added far away): the broad phase may skip
