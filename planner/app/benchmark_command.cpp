@@ -475,7 +475,8 @@ int runProgram(const std::vector<std::string>& argv, bool stdoutToStderr) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::string quoted(const std::vector<std::string>& argv) {
+/// The command as one line, for messages.
+std::string commandLine(const std::vector<std::string>& argv) {
   std::string s;
   for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
   return s;
@@ -704,7 +705,7 @@ int benchmark(const std::vector<std::string>& args) {
   const std::vector<std::string> convert = {statistics, logPath.string(), "-d", temporaryDatabase};
   if (runProgram(convert, true) != 0 || !fs::is_regular_file(temporaryDatabase)) {
     fs::remove(temporaryDatabase, error);
-    throw ToolFailure("'" + quoted(convert) + "' failed");
+    throw ToolFailure("'" + commandLine(convert) + "' failed");
   }
   fs::rename(temporaryDatabase, databasePath, error);
   if (error) throw ToolFailure("cannot write '" + databasePath.string() + "': " + error.message());
@@ -713,7 +714,7 @@ int benchmark(const std::vector<std::string>& args) {
 
   std::vector<std::string> draw = {kPython, plotter, databasePath.string(), "--out", directory.string(), "--prefix", stem};
   if (!a.plots) draw.push_back("--no-plots");
-  if (runProgram(draw, false) != 0) throw ToolFailure("'" + quoted(draw) + "' failed");
+  if (runProgram(draw, false) != 0) throw ToolFailure("'" + commandLine(draw) + "' failed");
   return 0;
 }
 
