@@ -84,6 +84,21 @@ void Query::visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hin
     return;
   }
 
+  if (a.node >= 0) {
+    // With trees, GJK runs only on sub-meshes of comparable size: a robot-sized node against a
+    // room-sized one overlaps its hull almost surely, and the boxes' bounds already did the
+    // culling GJK would do (kTreeGjkSizeRatio).
+    const MeshHierarchy::Node& na = treeA_->nodes()[a.node];
+    const MeshHierarchy::Node& nb = treeB_->nodes()[b.node];
+    const double sizeA = na.box.half.norm();
+    const double sizeB = nb.box.half.norm();
+    if ((sizeA > tolerance::kTreeGjkSizeRatio * sizeB && !na.isLeaf()) ||
+        (sizeB > tolerance::kTreeGjkSizeRatio * sizeA && !nb.isLeaf())) {
+      ++counters_.pairsSplit;
+      splitAlongTrees(a, b, depth, hint);
+      return;
+    }
+  }
   // Stage one (sec. 4): GJK on the hulls of the two sub-meshes.
   ++counters_.gjkCalls;
   const GjkResult g = runGjk([&](const Vec3& d) { return supportA(a, d); }, [&](const Vec3& d) { return supportB(b, d); },
@@ -159,18 +174,23 @@ double Query::nodeLowerBound(std::int32_t na, std::int32_t nb) const {
 }
 
 void Query::splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n) {
-  // Both nodes split into their children (a leaf stays whole), as Algorithm 1 splits both meshes;
-  // the child pairs go nearest first by their bounding spheres, which also drop pairs beyond the
+  // The child pairs go nearest first by their bounding spheres, which also drop pairs beyond the
   // global upper bound before any GJK runs on them (sec. 6.2).
   const MeshHierarchy::Node& na = treeA_->nodes()[a.node];
   const MeshHierarchy::Node& nb = treeB_->nodes()[b.node];
+  // Split the node whose box is larger (the other stays whole unless the two are of a size):
+  // halving a small robot against a room-sized node only multiplies the pairs.
+  const double sizeA = na.box.half.norm();
+  const double sizeB = nb.box.half.norm();
+  const bool splitA = !na.isLeaf() && (nb.isLeaf() || sizeA >= tolerance::kTreeSplitBothRatio * sizeB);
+  const bool splitB = !nb.isLeaf() && (na.isLeaf() || sizeB >= tolerance::kTreeSplitBothRatio * sizeA);
   std::int32_t partsA[2] = {a.node, -1};
   std::int32_t partsB[2] = {b.node, -1};
-  if (!na.isLeaf()) {
+  if (splitA) {
     partsA[0] = na.left;
     partsA[1] = na.right;
   }
-  if (!nb.isLeaf()) {
+  if (splitB) {
     partsB[0] = nb.left;
     partsB[1] = nb.right;
   }
