@@ -34,12 +34,22 @@ void requireClearanceOptions(const DistanceOptions& o) {
   throw InputError("clearance options: the threshold mode answers validity, not clearance; use exact, tolerance or cap");
 }
 
+/// Robot and environment are rigid here: every part gets its sub-mesh tree once, and every query
+/// reuses it (adsd/mesh_hierarchy.h, issue 6). The meshes are copied so that the caller's scene
+/// (which FCL's checker may share) is left as it was.
+std::shared_ptr<const RigidBodyScene> withHierarchies(const std::shared_ptr<const RigidBodyScene>& scene) {
+  auto prepared = std::make_shared<RigidBodyScene>(*scene);
+  for (Mesh& part : prepared->robot) part.buildHierarchy();
+  for (Mesh& part : prepared->environment) part.buildHierarchy();
+  return prepared;
+}
+
 }  // namespace
 
 MeshValidityChecker::MeshValidityChecker(const ompl::base::SpaceInformationPtr& si,
                                          std::shared_ptr<const RigidBodyScene> scene, double safetyMargin,
                                          const DistanceOptions& clearanceOptions)
-    : RigidBodyValidityChecker(si, std::move(scene), safetyMargin), clearanceOptions_(clearanceOptions) {
+    : RigidBodyValidityChecker(si, withHierarchies(scene), safetyMargin), clearanceOptions_(clearanceOptions) {
   requireClearanceOptions(clearanceOptions_);
   // Honest about what clearance() returns: exact, or a lower bound (tolerance: the interval's lower
   // end; cap: min(distance, cap)).
