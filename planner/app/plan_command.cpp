@@ -4,6 +4,7 @@
 // Solves a problem file (the default problem without one), simplifies the path, prints a summary
 // and writes the path in OMPL.app's .path format. Exit status: 0 solved, 1 not solved within the
 // time, 2 bad input (one line naming the file, line and key).
+#include <exception>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -135,8 +136,16 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
       if (!planner->params().hasParam(s.key)) {
         std::cerr << "adsd plan: warning: " << s.location.describe() << ": " << chosen << " has no parameter '"
                   << s.key << "', ignored\n";
-      } else if (!planner->params().setParam(s.key, s.value)) {
-        throw InputError(s.location.describe() + ": " + chosen + " rejected the value '" + s.value + "'");
+      } else {
+        // OMPL answers a value it cannot convert by throwing (a non-number for a numeric
+        // parameter), and a value out of range by returning false: both are the file's error.
+        bool accepted = false;
+        try {
+          accepted = planner->params().setParam(s.key, s.value);
+        } catch (const std::exception&) {
+          accepted = false;
+        }
+        if (!accepted) throw InputError(s.location.describe() + ": " + chosen + " rejected the value '" + s.value + "'");
       }
     }
   }
