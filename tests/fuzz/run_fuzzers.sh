@@ -11,8 +11,9 @@
 #   --parallel P     targets fuzzed at once (default: the number of cores)
 #   TARGET           mesh_loader, problem_file, pose_file, distance (default: all four)
 #
-# Exit status 0 when no target found anything; otherwise 1, naming the artifacts, which become
-# regression inputs in tests/fuzz/regressions/TARGET (README.md).
+# Exit status 0 when no target found anything new; otherwise 1, naming the artifacts, which become
+# regression inputs in tests/fuzz/regressions/TARGET (README.md). Artifacts of findings already
+# reported to another owner (tests/fuzz/regressions-pending) are counted, not failed.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source_dir=$PWD
@@ -53,8 +54,9 @@ export LSAN_OPTIONS="suppressions=$source_dir/tests/fuzz/lsan.supp:print_suppres
 export ASAN_OPTIONS="abort_on_error=0:detect_leaks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
-# fuzz TARGET: one run of -max_total_time seconds; the grown corpus is kept in the build tree so
-# the repository's seeds stay as committed.
+# fuzz TARGET: -max_total_time seconds in libFuzzer's fork mode, which goes on after a finding
+# (-ignore_*: a known finding must not hide the next one); the grown corpus is kept in the build
+# tree so the repository's seeds stay as committed.
 fuzz() {
   local target=$1 run="$build_dir/fuzz-runs/$1"
   mkdir -p "$run/corpus"
@@ -62,13 +64,22 @@ fuzz() {
   [[ -d "tests/fuzz/regressions/$target" ]] && inputs+=("tests/fuzz/regressions/$target")
   # -timeout: an input running longer is a hang. -rss_limit_mb: bad input must not take the
   # machine's memory. -max_len: mesh and problem files of a few KB reach every grammar rule.
-  "$build_dir/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
-    -print_final_stats=1 -artifact_prefix="$run/" "${inputs[@]}" >"$run/log" 2>&1 || true
+  "$build_dir/tests/fuzz/fuzz_$target" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+    -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 -artifact_prefix="$run/" \
+    "${inputs[@]}" >"$run/log" 2>&1 || true
   local execs
-  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log" | tail -1)
-  local found
-  found=$(find "$run" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'leak-*' -o -name 'oom-*' \) | wc -l)
-  echo "fuzz_$target: ${execs:-?} executions in ${seconds} s, corpus $(find "$run/corpus" -type f | wc -l) inputs, $found findings"
+  execs=$(sed -n 's/^#\([0-9]*\): cov:.*/\1/p' "$run/log" | tail -1)
+  echo "fuzz_$target: ${execs:-?} executions in ${seconds} s, corpus $(find "$run/corpus" -type f | wc -l) inputs"
+}
+
+# signature TARGET FILE: one line saying what FILE breaks (the property, sanitizer report or hang)
+# followed by the stack frames of the report, so that a signature can name where it happens.
+signature() {
+  local report first
+  report=$(timeout 120 "$build_dir/tests/fuzz/fuzz_$1" -timeout=10 -rss_limit_mb=2048 "$2" 2>&1 || true)
+  first=$(grep -a -m1 -E 'property violated: |^SUMMARY: |ERROR: libFuzzer: (timeout|out-of-memory)' <<<"$report" ||
+    echo "no report on replay")
+  echo "$first" $(grep -a -E '^ +#[0-9]+ ' <<<"$report" | awk '{print $2, $3, $4}' | tr '\n' ' ')
 }
 
 rm -rf "$build_dir/fuzz-runs"
@@ -81,10 +92,30 @@ for t in "${targets[@]}"; do
 done
 wait
 
-artifacts=$(find "$build_dir/fuzz-runs" -maxdepth 2 -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'leak-*' -o -name 'oom-*' \))
-if [[ -n "$artifacts" ]]; then
-  echo "=== fuzzing found problems (logs in $build_dir/fuzz-runs/TARGET/log):"
-  echo "$artifacts"
+# Triage: an artifact whose replay matches a signature in regressions-pending/TARGET (a finding
+# already reported to the code's owner) is known; anything else fails the run.
+new_findings=0
+for t in "${targets[@]}"; do
+  run="$build_dir/fuzz-runs/$t"
+  known=0
+  while IFS= read -r artifact; do
+    what=$(signature "$t" "$artifact")
+    matched=""
+    for sig in tests/fuzz/regressions-pending/"$t"/*.signature; do
+      [[ -f "$sig" ]] && grep -aqEf "$sig" <<<"$what" && matched=$sig && break
+    done
+    if [[ -n "$matched" ]]; then
+      known=$((known + 1))
+    else
+      new_findings=$((new_findings + 1))
+      echo "NEW FINDING fuzz_$t: $artifact"
+      echo "    ${what:0:400}"
+    fi
+  done < <(find "$run" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'leak-*' -o -name 'oom-*' \))
+  [[ $known -gt 0 ]] && echo "fuzz_$t: $known artifact(s) of findings already reported (tests/fuzz/regressions-pending/$t)"
+done
+if [[ $new_findings -gt 0 ]]; then
+  echo "=== fuzzing found $new_findings new problem(s) (logs in $build_dir/fuzz-runs/TARGET/log)"
   exit 1
 fi
-echo "=== fuzzing found nothing"
+echo "=== fuzzing found nothing new"
