@@ -106,6 +106,10 @@ for t in "${targets[@]}"; do
     done
     if [[ -n "$matched" ]]; then
       known=$((known + 1))
+    elif [[ "$what" == "no report on replay"* ]]; then
+      # Fork mode writes the input a job was running when it is stopped at the end of the time as
+      # a crash; an artifact that replays cleanly is listed, not failed.
+      echo "fuzz_$t: $artifact does not reproduce (a job stopped at the time limit), ignored"
     else
       new_findings=$((new_findings + 1))
       echo "NEW FINDING fuzz_$t: $artifact"
