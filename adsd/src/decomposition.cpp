@@ -34,6 +34,13 @@ std::uint32_t splitAtMedian(std::vector<std::uint32_t>& order, std::uint32_t t0,
   return mid;
 }
 
+/// Adds a child pair to children[0, count), kept sorted by lower bound (nearest first).
+void insertNearestFirst(Child* children, int& count, const Child& c) {
+  int k = count++;
+  for (; k > 0 && c.lower < children[k - 1].lower; --k) children[k] = children[k - 1];
+  children[k] = c;
+}
+
 /// Is a cut that leaves `part` of `total` triangles on one side worth keeping (kMinSplitFraction)?
 bool worthKeeping(std::uint32_t part, std::uint32_t total) {
   return part >= 1 && part < total && part >= tolerance::kMinSplitFraction * total;
@@ -200,10 +207,8 @@ void Query::splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const
     if (pa < 0) continue;
     for (std::int32_t pb : partsB) {
       if (pb < 0) continue;
-      Child c{static_cast<std::uint32_t>(pa), static_cast<std::uint32_t>(pb), nodeLowerBound(pa, pb)};
-      int k = count++;
-      for (; k > 0 && c.lower < children[k - 1].lower; --k) children[k] = children[k - 1];
-      children[k] = c;
+      insertNearestFirst(children, count,
+                         Child{static_cast<std::uint32_t>(pa), static_cast<std::uint32_t>(pb), nodeLowerBound(pa, pb)});
     }
   }
   for (int k = 0; k < count && !done_; ++k) {
@@ -295,10 +300,7 @@ void Query::splitAdaptively(const SubMesh& a, const SubMesh& b, int depth, const
   int count = 0;
   for (int i = 0; i < countA; ++i) {
     for (int j = 0; j < countB; ++j) {
-      Child c{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), loB[j] - hiA[i]};
-      int k = count++;
-      for (; k > 0 && c.lower < children[k - 1].lower; --k) children[k] = children[k - 1];
-      children[k] = c;
+      insertNearestFirst(children, count, Child{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), loB[j] - hiA[i]});
     }
   }
   for (int k = 0; k < count && !done_; ++k) {

@@ -106,28 +106,30 @@ std::uint32_t treeSupport(const MeshHierarchy& tree, const std::vector<Vec3>& ve
 
 }  // namespace
 
-SupportPoint Query::supportA(const SubMesh& a, const Vec3& d) const {
-  const std::vector<Vec3>& vertices = a_.vertices();
-  if (a.node >= 0) {
-    SupportPoint s;
-    s.feature = treeSupport(*treeA_, vertices, a.node, d);
-    s.point = vertices[s.feature];
-    s.isVertex = true;
-    return s;
-  }
+namespace {
+
+/// Support mapping (eq. 4-5) of a sub-mesh from scratch: the vertex of list[v0, v1) maximizing d.x.
+std::uint32_t scanSupport(const std::vector<Vec3>& vertices, const std::vector<std::uint32_t>& list, std::uint32_t v0,
+                          std::uint32_t v1, const Vec3& d) {
   double bestValue = -std::numeric_limits<double>::infinity();
-  std::uint32_t bestVertex = buf_.verticesA[a.v0];
-  for (std::uint32_t i = a.v0; i < a.v1; ++i) {
-    const std::uint32_t v = buf_.verticesA[i];
-    const double value = d.dot(vertices[v]);
+  std::uint32_t bestVertex = list[v0];
+  for (std::uint32_t i = v0; i < v1; ++i) {
+    const double value = d.dot(vertices[list[i]]);
     if (value > bestValue) {
       bestValue = value;
-      bestVertex = v;
+      bestVertex = list[i];
     }
   }
+  return bestVertex;
+}
+
+}  // namespace
+
+SupportPoint Query::supportA(const SubMesh& a, const Vec3& d) const {
+  const std::vector<Vec3>& vertices = a_.vertices();
   SupportPoint s;
-  s.point = vertices[bestVertex];
-  s.feature = bestVertex;
+  s.feature = a.node >= 0 ? treeSupport(*treeA_, vertices, a.node, d) : scanSupport(vertices, buf_.verticesA, a.v0, a.v1, d);
+  s.point = vertices[s.feature];
   s.isVertex = true;
   return s;
 }
@@ -137,26 +139,9 @@ SupportPoint Query::supportB(const SubMesh& b, const Vec3& dInA) const {
   // the winner.
   const Vec3 d = rotationAB_ * dInA;
   const std::vector<Vec3>& vertices = b_.vertices();
-  if (b.node >= 0) {
-    SupportPoint s;
-    s.feature = treeSupport(*treeB_, vertices, b.node, d);
-    s.point = toA(vertices[s.feature]);
-    s.isVertex = true;
-    return s;
-  }
-  double bestValue = -std::numeric_limits<double>::infinity();
-  std::uint32_t bestVertex = buf_.verticesB[b.v0];
-  for (std::uint32_t i = b.v0; i < b.v1; ++i) {
-    const std::uint32_t v = buf_.verticesB[i];
-    const double value = d.dot(vertices[v]);
-    if (value > bestValue) {
-      bestValue = value;
-      bestVertex = v;
-    }
-  }
   SupportPoint s;
-  s.point = toA(vertices[bestVertex]);
-  s.feature = bestVertex;
+  s.feature = b.node >= 0 ? treeSupport(*treeB_, vertices, b.node, d) : scanSupport(vertices, buf_.verticesB, b.v0, b.v1, d);
+  s.point = toA(vertices[s.feature]);
   s.isVertex = true;
   return s;
 }
