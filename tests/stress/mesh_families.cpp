@@ -213,31 +213,45 @@ Generated offsetPoses(SeededRandom& random, double s) {
 }
 
 /// Issue 3: large offsets through the vertex coordinates: the close pair baked into its vertices and
-/// shifted by 1e3 ... 1e8 x the scene, then (1) identity poses, (2) one common rotation for both,
-/// (3) poses that translate each mesh back near the origin, (4) the meshes shifted by different
-/// offsets and translated back.
+/// shifted by 1e3 ... 1e8 x the scene, the two mesh frames related exactly (equal poses that are
+/// pure translations): identity poses, poses that translate both meshes back near the origin, or
+/// one common translation anywhere.
 Generated offsetVertices(SeededRandom& random, double s) {
   ClosePair c = closePair(random, s);
   const Vec3 offset = s * random.logUniform(3, 8) * random.unitVector();
   const Mesh a = offsetMesh(transformedMesh(c.a, c.poseA), offset);
   const Mesh b = offsetMesh(transformedMesh(c.b, c.poseB), offset);
-  switch (random.below(4)) {
+  switch (random.below(3)) {
     case 0: return meshPair(a, Pose::Identity(), b, Pose::Identity(), c.variant + ", identity poses", c.penetrating);
     case 1: {
-      const Pose common = rigid(randomRotation(random), s * random.inCube(1));
-      return meshPair(a, common, b, common, c.variant + ", common rotation", c.penetrating);
-    }
-    case 2: {
       const Pose back(Eigen::Translation3d(-offset));
       return meshPair(a, back, b, back, c.variant + ", translated back", c.penetrating);
     }
     default: {
-      const Vec3 otherOffset = s * random.logUniform(3, 8) * random.unitVector();
-      const Mesh b2 = offsetMesh(transformedMesh(c.b, c.poseB), otherOffset);
-      return meshPair(a, Pose(Eigen::Translation3d(-offset)), b2, Pose(Eigen::Translation3d(-otherOffset)),
-                      c.variant + ", separate offsets", c.penetrating);
+      const Pose common(Eigen::Translation3d(s * random.logUniform(0, 8) * random.unitVector()));
+      return meshPair(a, common, b, common, c.variant + ", common translation", c.penetrating);
     }
   }
+}
+
+/// Issue 3: large offsets through the vertex coordinates with mesh frames that are NOT related
+/// exactly: the close pair baked into its vertices 1e3 ... 1e8 x the scene from the origin under
+/// one common random rotation (R_A^T R_B is the identity only up to rounding), or each mesh
+/// shifted by its own offset and translated back next to the other (in A's frame B's vertices are
+/// as far out as the offsets).
+Generated offsetFrames(SeededRandom& random, double s) {
+  ClosePair c = closePair(random, s);
+  const Vec3 offset = s * random.logUniform(3, 8) * random.unitVector();
+  const Mesh a = offsetMesh(transformedMesh(c.a, c.poseA), offset);
+  if (random.below(2)) {
+    const Mesh b = offsetMesh(transformedMesh(c.b, c.poseB), offset);
+    const Pose common = rigid(randomRotation(random), s * random.inCube(1));
+    return meshPair(a, common, b, common, c.variant + ", common rotation", c.penetrating);
+  }
+  const Vec3 otherOffset = s * random.logUniform(3, 8) * random.unitVector();
+  const Mesh b = offsetMesh(transformedMesh(c.b, c.poseB), otherOffset);
+  return meshPair(a, Pose(Eigen::Translation3d(-offset)), b, Pose(Eigen::Translation3d(-otherOffset)),
+                  c.variant + ", separate offsets", c.penetrating);
 }
 
 /// A box, a plate or a prism lying on its side: shapes with flat faces along the axes.
@@ -519,8 +533,10 @@ std::vector<Family> meshFamilies() {
                -6, 6, {0.7, 0.0, 0.0}, coincident});
   f.push_back({"mesh/offset-poses", "close pairs moved 1e3..1e8 x scene by a common rigid motion (poses)",
                -6, 6, {0.1, 0.2, 0.08}, offsetPoses});
-  f.push_back({"mesh/offset-vertices", "close pairs baked into vertices 1e3..1e8 x scene from the origin",
+  f.push_back({"mesh/offset-vertices", "close pairs baked into vertices 1e3..1e8 x scene out, frames related exactly",
                -6, 6, {0.1, 0.1, 0.07}, offsetVertices});
+  f.push_back({"mesh/offset-frames", "the same with one common rotation, or separate offsets translated back",
+               -6, 6, {0.1, 0.1, 0.07}, offsetFrames});
   f.push_back({"mesh/rotation-near-identity", "flat faces over flat faces turned by 1e-16..1e-3 rad",
                -6, 6, {0.05, 0.2, 0.2}, rotationNearIdentity});
   f.push_back({"mesh/rotation-near-180", "B (and sometimes A) turned by pi - (0 or 1e-16..1e-3) rad",

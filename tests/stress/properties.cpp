@@ -5,6 +5,7 @@
 #include <exception>
 #include <sstream>
 
+#include "adsd/mesh_hierarchy.h"
 #include "adsd/tolerances.h"
 #include "oracle.h"
 #include "shape_kit.h"
@@ -156,6 +157,48 @@ void checkWitnesses(const StressCase& c, const Truth& t, const DistanceResult& r
   if (!(std::abs(realized - r.distance) <= t.witnessSlack)) fail(out, query, "witnesses do not realize the distance", r, w.str());
 }
 
+void checkHierarchy(const Mesh& mesh, const std::string& query, std::vector<Failure>& out) {
+  const MeshHierarchy* tree = mesh.hierarchy();
+  if (tree == nullptr) {
+    out.push_back({query + ": no hierarchy after buildHierarchy()", mesh.name()});
+    return;
+  }
+  double worst = 0.0, worstSlack = 0.0, worstOrthogonality = 0.0;
+  std::size_t worstNode = 0;
+  for (std::size_t i = 0; i < tree->nodes().size(); ++i) {
+    const MeshHierarchy::Node& node = tree->nodes()[i];
+    const OrientedBox& box = node.box;
+    const double magnitude =
+        std::max(mesh.maxAbsCoordinate(), box.center.cwiseAbs().maxCoeff() + box.half.cwiseAbs().maxCoeff());
+    const double slack = kBoxRoundingUlps * tolerance::kEpsilon * magnitude;
+    for (std::uint32_t k = node.t0; k < node.t1; ++k) {
+      for (int corner = 0; corner < 3; ++corner) {
+        const Vec3& p = mesh.corner(tree->order()[k], corner);
+        for (int axis = 0; axis < 3; ++axis) {
+          for (double sign : {1.0, -1.0}) {
+            const Vec3 d = sign * box.axes.col(axis);
+            const double outside = d.dot(p) - box.support(d);
+            if (outside - slack > worst - worstSlack) {
+              worst = outside;
+              worstSlack = slack;
+              worstNode = i;
+              worstOrthogonality = (box.axes.transpose() * box.axes - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+            }
+          }
+        }
+      }
+    }
+  }
+  if (worst > worstSlack) {
+    DistanceResult none;
+    std::ostringstream w;
+    w << "node " << worstNode << " of " << tree->nodes().size() << ": a corner lies " << exactNumber(worst)
+      << " outside its box along a box axis (allowance " << exactNumber(worstSlack) << "), |axes^T axes - I| "
+      << exactNumber(worstOrthogonality);
+    out.push_back({query + ": vertex outside its node box", w.str()});
+  }
+}
+
 namespace {
 
 /// The settings a case's queries rotate through (by case index and path), chosen around the
@@ -212,6 +255,8 @@ CaseReport checkCase(const StressCase& c, DistanceScratch& scratch) {
   const Mesh permutedA = permutedMesh(c.a, random), permutedB = permutedMesh(c.b, random);
   const Mesh treeA = withTree(c.a), treeB = withTree(c.b);
   const Mesh treePermutedA = withTree(permutedA), treePermutedB = withTree(permutedB);
+  checkHierarchy(treeA, "tree A", out);
+  checkHierarchy(treeB, "tree B", out);
 
   for (int path = 0; path < 2; ++path) {
     const std::string name = path == 0 ? "scratch " : "tree ";

@@ -29,6 +29,12 @@ inline constexpr double kPredicateBand = 1e-9;
 /// play is the allowance on top of kAccuracy x diagonal for "lies on its triangle" and "realizes
 /// the distance"; without it no double witness could pass at offsets of 1e8 x the scene.
 inline constexpr double kWitnessRoundingUlps = 16.0;
+/// checkHierarchy()'s allowance for a corner outside its node box, in units of roundoff of the
+/// mesh's largest coordinate (or the box's magnitude if larger): half of
+/// tolerance::kBoundSafetyUlps, the margin every query subtracts from its lower bounds. A miss
+/// below it is rounding that the query's margin absorbs with room to spare for the bound's own
+/// rounding; a miss beyond it can make a bound prune the closest pair.
+inline constexpr double kBoxRoundingUlps = 32.0;
 
 /// \brief What the oracle says about a case.
 struct Truth {
@@ -79,6 +85,12 @@ void checkCap(const Truth& t, double cap, const DistanceResult& r, const std::st
 /// for (B, A).
 void checkWitnesses(const StressCase& c, const Truth& t, const DistanceResult& r, bool swapped, const std::string& query,
                     std::vector<Failure>& out);
+
+/// mesh_hierarchy.h: every node's box ("bounds of the node's vertices", axes "unit") holds every
+/// corner of the node's triangles: along each box axis, no corner lies beyond the box's support
+/// by more than kBoxRoundingUlps of the magnitudes in play. A corner outside lets the tree's
+/// bounds prune the closest pair.
+void checkHierarchy(const Mesh& mesh, const std::string& query, std::vector<Failure>& out);
 
 /// \brief Everything learned from one case.
 struct CaseReport {
