@@ -1,6 +1,7 @@
 // Algorithm 1 (RecursiveMinDist) and stage three, the adaptive decomposition of sec. 6.
 
 #include <algorithm>
+#include <cmath>
 
 #include "adsd/triangle_distance.h"
 #include "query.h"
@@ -68,9 +69,11 @@ void Query::testAllPairs(const SubMesh& a, const SubMesh& b) {
       const Vec3 q0 = toA(b_.corner(tb, 0));
       const Vec3 q1 = toA(b_.corner(tb, 1));
       const Vec3 q2 = toA(b_.corner(tb, 2));
-      // The boxes' gap first: a pair that cannot matter costs no exact test.
+      // The boxes' gap first: a pair that cannot matter costs no exact test. (Not before some
+      // pair has been measured: a query must end with a real distance, never an infinite one;
+      // tests/stress ThresholdModeNeverAnswersAnInfiniteDistance.)
       const Vec3 gap = (q0.cwiseMin(q1).cwiseMin(q2) - hiA).cwiseMax(loA - q0.cwiseMax(q1).cwiseMax(q2)).cwiseMax(0.0);
-      if (skip(gap.norm() - roundoff_)) continue;
+      if (std::isfinite(best_) && skip(gap.norm() - roundoff_)) continue;
       const TrianglePairResult t = triangleDistance(p0, p1, p2, q0, q1, q2);
       ++counters_.trianglePairsTested;
       offer(t.pointOnA, t.pointOnB, t.distance, ta, false, tb, false);

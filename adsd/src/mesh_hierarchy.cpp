@@ -47,10 +47,25 @@ OrientedBox principalBox(const std::vector<Vec3>& points) {
   for (const Vec3& p : points) covariance += (p - mean) * (p - mean).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(covariance);
-  box.axes = solver.eigenvectors();
-  // Degenerate spreads (a point, a segment) can leave the solver's axes unusable: fall back to
-  // the mesh axes, which bound just as correctly.
-  if (!box.axes.allFinite() || std::abs(std::abs(box.axes.determinant()) - 1.0) > 1e-6) {
+  // The closed-form solver's eigenvectors are orthonormal only to ~1e-9 at times, and a box on
+  // skewed axes does not hold what its support formula says (tests/stress: "tree node boxes
+  // contain their vertices"). Re-orthonormalize (Gram-Schmidt, the third axis a cross product),
+  // so the axes are a rotation to roundoff and pad() covers the rest.
+  const Eigen::Matrix3d raw = solver.eigenvectors();
+  Vec3 x = raw.col(0);
+  Vec3 y = raw.col(1);
+  if (raw.allFinite() && x.norm() > 0.5) {
+    x.normalize();
+    y -= x.dot(y) * x;
+  }
+  if (raw.allFinite() && x.norm() > 0.5 && y.norm() > 0.5) {
+    y.normalize();
+    box.axes.col(0) = x;
+    box.axes.col(1) = y;
+    box.axes.col(2) = x.cross(y);
+  } else {
+    // Degenerate spreads (a point, a segment) can leave the solver's axes unusable: the mesh
+    // axes bound just as correctly.
     box.axes.setIdentity();
   }
   fitExtents(box, points);

@@ -47,7 +47,7 @@ TEST(StressRegression, PqpExactlyParallelEdgesNear8000ThroughTheWholeQuery) {
 // CORE BUG pending (0a42bca, box prefilter in Query::testAllPairs): the thresholds below the gap
 // are answered with distance = upper = +inf ("threshold: non-finite field"); exact, tolerance and
 // cap answers are right.
-TEST(StressRegression, DISABLED_TinyTrianglesAreNotReportedTouchingThroughTheWholeQuery) {
+TEST(StressRegression, TinyTrianglesAreNotReportedTouchingThroughTheWholeQuery) {
   // The 1e-15 threshold on |n|^2 in PQP/FCL/Coal: edges below ~2e-4 read as contact.
   for (double size = 1e-3; size >= 1e-9; size /= 4) {
     const double gap = 0.5 * size;
@@ -61,7 +61,7 @@ TEST(StressRegression, DISABLED_TinyTrianglesAreNotReportedTouchingThroughTheWho
 // ---------------------------------------------------------------------------------------------
 // Found by adsd_stress (minimized by it: the smallest sub-meshes that still fail the same check).
 
-TEST(StressRegression, DISABLED_ThresholdModeNeverAnswersAnInfiniteDistance) {
+TEST(StressRegression, ThresholdModeNeverAnswersAnInfiniteDistance) {
   // CORE BUG (0a42bca, box prefilter in Query::testAllPairs): two exactly parallel CAD-like
   // triangles 1.4e-6 apart at coordinates ~2e4, thresholds below their distance. Every pair of a
   // direct sub-mesh pair is skipped by its box gap before any distance is offered, so threshold
@@ -328,7 +328,7 @@ TEST(StressRegression, DISABLED_MeshFramesFarApartTranslatedBack) {
   expectAllProperties(pinned("MeshFramesFarApartTranslatedBack", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_TreeNodeBoxesContainTheirVerticesFarFromTheOrigin) {
+TEST(StressRegression, TreeNodeBoxesContainTheirVerticesFarFromTheOrigin) {
   // CORE BUG (59f3be5, MeshHierarchy oriented boxes): a prism near a triangle, both baked into
   // vertex coordinates ~2e3 from their origin and translated back by the same pose (relative
   // transform exactly the identity; the scene is 4e-5 across). With hierarchies, threshold
@@ -392,7 +392,7 @@ TEST(StressRegression, DISABLED_TreeNodeBoxesContainTheirVerticesFarFromTheOrigi
   expectAllProperties(pinned("TreeNodeBoxesContainTheirVerticesFarFromTheOrigin", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_TreeNodeBoxesContainTheirVertices) {
+TEST(StressRegression, TreeNodeBoxesContainTheirVertices) {
   // CORE BUG (59f3be5, MeshHierarchy oriented boxes): a prism of scale 3 (coordinates up to
   // 2.6; one triangle of A left by the minimizer, 28 of B). The root box of B leaves a corner
   // 1.3e-10 outside it (4e-11 of the coordinates, ~3e5 units of roundoff; the query subtracts
