@@ -238,8 +238,12 @@ std::int64_t triangleWithVertex(const Mesh& mesh, std::int64_t vertex) {
 DistanceResult Query::run() {
   const std::uint32_t nA = static_cast<std::uint32_t>(a_.triangleCount());
   const std::uint32_t nB = static_cast<std::uint32_t>(b_.triangleCount());
-  // First search vector: from a corner of B to a corner of A (any non-zero guess of a - b).
+  // First search vector: from a corner of B to a corner of A (any non-zero guess of a - b). The
+  // two corners are also the first upper bound: every query then ends with a real, finite
+  // distance, even one whose every pair the bounds dropped unmeasured (tests/stress: "tree
+  // threshold: non-finite field").
   const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
+  offer(a_.corner(0, 0), toA(b_.corner(0, 0)), start.norm(), 0, false, 0, false);
   if (a_.hierarchy() != nullptr && b_.hierarchy() != nullptr) {
     treeA_ = a_.hierarchy();
     treeB_ = b_.hierarchy();
