@@ -5,7 +5,7 @@
 ///
 /// Each case is checked with every property of the suite (properties.h: checkCase). A case that
 /// exposes a core bug not yet fixed stays here as DISABLED_ with the bug named, so that main stays
-/// green and the case is one rename away from guarding the fix.
+/// green and the case is one rename away from guarding the fix; fixed ones say where.
 
 #include <gtest/gtest.h>
 
@@ -44,9 +44,8 @@ TEST(StressRegression, PqpExactlyParallelEdgesNear8000ThroughTheWholeQuery) {
   expectAllProperties(pinned("PQP issue 4", s, Pose::Identity(), t, Pose::Identity()));
 }
 
-// CORE BUG pending (0a42bca, box prefilter in Query::testAllPairs): the thresholds below the gap
-// are answered with distance = upper = +inf ("threshold: non-finite field"); exact, tolerance and
-// cap answers are right.
+// Failed from 0a42bca to f09fa1f (box prefilter in Query::testAllPairs): the thresholds below the
+// gap were answered with distance = upper = +inf ("threshold: non-finite field").
 TEST(StressRegression, TinyTrianglesAreNotReportedTouchingThroughTheWholeQuery) {
   // The 1e-15 threshold on |n|^2 in PQP/FCL/Coal: edges below ~2e-4 read as contact.
   for (double size = 1e-3; size >= 1e-9; size /= 4) {
@@ -62,7 +61,8 @@ TEST(StressRegression, TinyTrianglesAreNotReportedTouchingThroughTheWholeQuery) 
 // Found by adsd_stress (minimized by it: the smallest sub-meshes that still fail the same check).
 
 TEST(StressRegression, ThresholdModeNeverAnswersAnInfiniteDistance) {
-  // CORE BUG (0a42bca, box prefilter in Query::testAllPairs): two exactly parallel CAD-like
+  // Core bug from 0a42bca, fixed in f09fa1f (box prefilter in Query::testAllPairs): two exactly
+  // parallel CAD-like
   // triangles 1.4e-6 apart at coordinates ~2e4, thresholds below their distance. Every pair of a
   // direct sub-mesh pair is skipped by its box gap before any distance is offered, so threshold
   // mode answers aboveThreshold with distance = upper = +inf (issue 3: no infinity in any result
@@ -329,7 +329,8 @@ TEST(StressRegression, DISABLED_MeshFramesFarApartTranslatedBack) {
 }
 
 TEST(StressRegression, TreeNodeBoxesContainTheirVerticesFarFromTheOrigin) {
-  // CORE BUG (59f3be5, MeshHierarchy oriented boxes): a prism near a triangle, both baked into
+  // Core bug from 59f3be5, fixed in f09fa1f (MeshHierarchy oriented boxes): a prism near a
+  // triangle, both baked into
   // vertex coordinates ~2e3 from their origin and translated back by the same pose (relative
   // transform exactly the identity; the scene is 4e-5 across). With hierarchies, threshold
   // 3.5e-9 answers aboveThreshold (lower = 3.5e-9) although the distance is 1.75e-9: the
@@ -393,7 +394,8 @@ TEST(StressRegression, TreeNodeBoxesContainTheirVerticesFarFromTheOrigin) {
 }
 
 TEST(StressRegression, TreeNodeBoxesContainTheirVertices) {
-  // CORE BUG (59f3be5, MeshHierarchy oriented boxes): a prism of scale 3 (coordinates up to
+  // Core bug from 59f3be5, fixed in f09fa1f (MeshHierarchy oriented boxes): a prism of scale 3
+  // (coordinates up to
   // 2.6; one triangle of A left by the minimizer, 28 of B). The root box of B leaves a corner
   // 1.3e-10 outside it (4e-11 of the coordinates, ~3e5 units of roundoff; the query subtracts
   // 64): computeDirect's eigenvectors are orthonormal only to 1.2e-10 here and the box is fitted
