@@ -663,7 +663,8 @@ int run(const Options& options, const std::string& command) {
     }
   }
   if (!allAgree) {
-    std::printf("PROBLEM: some of our answers break their guarantee against the oracle (see violations)\n");
+    std::printf("PROBLEM: some of our answers break their guarantee against the oracle, or ours_exact's checksum "
+                "differs from the oracle's (see DISAGREE and violations above)\n");
     return 3;
   }
   std::printf("all our answers within their guarantees against the oracle%s\n",
