@@ -1,0 +1,187 @@
+#!/usr/bin/python3
+"""Issue 6's end-to-end row: median solve time of RRTConnect and PRM with our checker ÷ with FCL's,
+per shipped problem, measured by `adsd benchmark` (both checkers interleaved run by run, one run).
+
+usage: solve_time_ratios.py --adsd PROGRAM --problems DIR [--out DIR] [--runs N] [--time SECONDS]
+                            [--planners rrtconnect,prm] [--only office,maze,...] [--seed S]
+
+For every PROBLEM.cfg in --problems (the build's problem_files directory: the shipped .cfg files
+next to the meshes the build generated), writes OUT/cfgs/PROBLEM.cfg: the file's [problem]
+section with absolute mesh paths and `objective.threshold` so high that any path meets it, then a
+[benchmark] section (--time, --runs, no simplification) and a [planner] section listing
+--planners. Then runs
+  adsd benchmark OUT/cfgs/PROBLEM.cfg --checker both --motion discrete --out OUT/PROBLEM --no-plots
+and reads OUT/PROBLEM/PROBLEM.db (the database ompl_benchmark_statistics wrote).
+
+Why the threshold: the shipped files ask for short paths, and PRM then keeps improving its roadmap
+until the time limit (its solve time is the limit whatever the checker); with a threshold any path
+meets, PRM stops at its first solution, as RRTConnect always does. Solve time is then the time to
+a first exact solution, the question a validity checker's speed answers.
+
+Prints (and writes to OUT/solve_times.md) one Markdown row per problem and planner: runs, exact
+solutions, median solve time with each checker (a run without an exact solution counts as the time
+limit, as OMPL records it), and ours ÷ FCL. When half or more of a checker's runs found no exact
+solution, its median is the time limit, not a solve time, and the ratio is marked "censored".
+Exit status: 0; 1 when adsd benchmark fails; 2 on bad usage.
+"""
+import argparse
+import os
+import re
+import sqlite3
+import statistics
+import subprocess
+import sys
+import time
+
+# Path-length threshold every path of the shipped problems meets (their workspaces are at most
+# tens of metres across and the paths a few hundred segments): PRM stops at its first solution.
+ANY_PATH_LENGTH = 1e9
+COMBINATION = re.compile(r"^(?:geometric_)?(?P<label>.*) \[(?P<checker>[^,\]]+), (?P<motion>[^\]]+)\]$")
+
+
+def sections(path):
+    """The file's lines grouped by section: a list of (name, lines), name '' before the first."""
+    result = [("", [])]
+    for line in open(path):
+        header = re.match(r"^\s*\[([^\]]+)\]\s*$", line)
+        if header:
+            result.append((header.group(1).strip().lower(), []))
+        else:
+            result[-1][1].append(line.rstrip("\n"))
+    return result
+
+
+def variant_cfg(source, planners, runs, seconds):
+    """The text of SOURCE's variant: its [problem] (absolute meshes, any path meets the objective),
+    then our [benchmark] and [planner]."""
+    directory = os.path.dirname(os.path.abspath(source))
+    out = ["# Written by bench/planning/solve_time_ratios.py from %s" % os.path.abspath(source)]
+    for name, lines in sections(source):
+        if name in ("benchmark", "planner"):
+            continue
+        if name:
+            out.append("[%s]" % name)
+        for line in lines:
+            key = line.split("=", 1)[0].strip().lower() if "=" in line else ""
+            if name == "problem" and key in ("robot", "world"):
+                value = line.split("=", 1)[1].strip()
+                line = "%s = %s" % (key, os.path.normpath(os.path.join(directory, value)))
+            if name == "problem" and key == "objective.threshold":
+                continue
+            out.append(line)
+        if name == "problem":
+            out.append("objective.threshold = %g" % ANY_PATH_LENGTH)
+    # simplify = 0: OMPL's path simplification after each run is not part of the solve time and
+    # only lengthens the benchmark.
+    out += ["", "[benchmark]", "time_limit = %g" % seconds, "mem_limit = 4000", "run_count = %d" % runs,
+            "simplify = 0", "",
+            "[planner]"] + ["%s =" % p for p in planners]
+    return "\n".join(out) + "\n"
+
+
+def read_runs(database):
+    connection = sqlite3.connect("file:%s?mode=ro" % database, uri=True)
+    try:
+        return connection.execute(
+            "SELECT plannerConfigs.name, runs.time, runs.solved, runs.approximate_solution FROM runs "
+            "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id ORDER BY runs.id").fetchall()
+    finally:
+        connection.close()
+
+
+def rows_for(problem, runs, seconds):
+    """One row per planner: (problem, planner, runs, exact solutions per checker, medians, ratio)."""
+    groups = {}
+    for name, elapsed, solved, approximate in runs:
+        m = COMBINATION.match(name)
+        if not m:
+            continue
+        exact = bool(solved) and not bool(approximate)
+        groups.setdefault(m.group("label"), {}).setdefault(m.group("checker"), []).append(
+            (elapsed if exact else max(elapsed, seconds), exact))
+    rows = []
+    for label, by_checker in groups.items():
+        ours, fcl = by_checker.get("adsd", []), by_checker.get("fcl", [])
+        if not ours or not fcl:
+            continue
+
+        def median_time(rs):
+            return statistics.median(t for t, _ in rs)
+
+        def censored(rs):
+            return 2 * sum(1 for _, exact in rs if exact) <= len(rs)
+
+        ratio = median_time(ours) / median_time(fcl)
+        rows.append((problem, label, len(ours), sum(e for _, e in ours), sum(e for _, e in fcl),
+                     median_time(ours), median_time(fcl), ratio, censored(ours) or censored(fcl)))
+    return rows
+
+
+def table(rows, command):
+    lines = ["Command: `%s`. Median solve time over the runs (a run without an exact solution counts as the time "
+             "limit); planners stop at their first solution; both checkers interleaved run by run in one "
+             "`adsd benchmark`, discrete motion validator." % command, "",
+             "| problem | planner | runs | exact solutions, ours | exact solutions, FCL | median s, ours | "
+             "median s, FCL | ours ÷ FCL |",
+             "|---|---|---:|---:|---:|---:|---:|---:|"]
+    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, censored in rows:
+        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s |" % (
+            problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t,
+            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio))
+    lines += ["", "Target (issue 6): ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--adsd", required=True, help="the adsd program")
+    parser.add_argument("--problems", required=True, help="directory of the shipped problems' .cfg files")
+    parser.add_argument("--out", default="solve-times", help="output directory (default: solve-times)")
+    parser.add_argument("--runs", type=int, default=10, help="runs per planner and checker (default 10)")
+    parser.add_argument("--time", type=float, default=10.0, help="time limit per run in seconds (default 10)")
+    parser.add_argument("--planners", default="rrtconnect,prm", help="planners (default rrtconnect,prm)")
+    parser.add_argument("--only", help="comma-separated problem names (default: every .cfg in --problems)")
+    parser.add_argument("--seed", help="OMPL's seed, passed to adsd benchmark")
+    args = parser.parse_args()
+    if args.runs < 1 or not args.time > 0:
+        parser.error("--runs and --time must be positive")
+    if not os.access(args.adsd, os.X_OK):
+        parser.error("no adsd program at '%s'" % args.adsd)
+    problems = sorted(f[:-4] for f in os.listdir(args.problems) if f.endswith(".cfg"))
+    if args.only:
+        wanted = args.only.split(",")
+        unknown = [p for p in wanted if p not in problems]
+        if unknown:
+            parser.error("no %s.cfg in %s" % (", ".join(unknown), args.problems))
+        problems = wanted
+    planners = args.planners.split(",")
+    os.makedirs(os.path.join(args.out, "cfgs"), exist_ok=True)
+
+    rows = []
+    for problem in problems:
+        cfg = os.path.join(args.out, "cfgs", problem + ".cfg")
+        with open(cfg, "w") as f:
+            f.write(variant_cfg(os.path.join(args.problems, problem + ".cfg"), planners, args.runs, args.time))
+        out_dir = os.path.join(args.out, problem)
+        command = [args.adsd, "benchmark", cfg, "--checker", "both", "--motion", "discrete", "--out", out_dir,
+                   "--no-plots"] + (["--seed", args.seed] if args.seed else [])
+        started = time.monotonic()
+        result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        if result.returncode != 0:
+            sys.stderr.write(result.stderr)
+            sys.exit("solve_time_ratios.py: %s failed (exit %d)" % (" ".join(command), result.returncode))
+        stem = os.path.join(out_dir, problem + (".seed-%s" % args.seed if args.seed else ""))
+        rows += rows_for(problem, read_runs(stem + ".db"), args.time)
+        print("solve_time_ratios.py: %s done in %.0f s" % (problem, time.monotonic() - started), file=sys.stderr)
+
+    command = "bench/planning/solve_time_ratios.py --runs %d --time %g --planners %s%s" % (
+        args.runs, args.time, args.planners, (" --only " + args.only) if args.only else "")
+    text = table(rows, command)
+    with open(os.path.join(args.out, "solve_times.md.tmp"), "w") as f:
+        f.write("<!-- generated by bench/planning/solve_time_ratios.py; do not edit -->\n" + text)
+    os.replace(os.path.join(args.out, "solve_times.md.tmp"), os.path.join(args.out, "solve_times.md"))
+    sys.stdout.write(text)
+
+
+if __name__ == "__main__":
+    main()
