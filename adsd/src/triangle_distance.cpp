@@ -21,46 +21,94 @@ Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return a + t * ab;
 }
 
-/// The unnormalized normal of (a, b, c), or zero when the triangle has no interior to speak of
-/// (kDegenerateArea2: it then acts as its three edges).
-Vec3 faceNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 n = (b - a).cross(c - a);
-  const double longest2 =
-      std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-  if (n.squaredNorm() <= tolerance::kDegenerateArea2 * longest2 * longest2) return Vec3::Zero();
-  return n;
+/// a*b - c*d to about one ulp of the result (Kahan's algorithm with a fused multiply-add): the
+/// rounding error of c*d is recovered exactly by the fma and added back. A plain a*b - c*d loses
+/// everything when the two products nearly cancel, which is what they do in the normal of a sliver.
+inline double differenceOfProducts(double a, double b, double c, double d) {
+  const double cd = c * d;
+  const double cdError = std::fma(-c, d, cd);
+  return std::fma(a, b, -cd) + cdError;
 }
 
-/// Closest point to p on triangle (a, b, c) with normal n (zero for a degenerate triangle).
-/// Inside test on p itself rather than on its projection: the normal component of p - a drops out
-/// of ((b - a) x (p - a)) . n, so the signs are those of the projection without its rounding.
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n) {
-  if (n.squaredNorm() > 0.0) {
-    const bool inside = (b - a).cross(p - a).dot(n) >= 0.0 && (c - b).cross(p - b).dot(n) >= 0.0 &&
-                        (a - c).cross(p - c).dot(n) >= 0.0;
-    if (inside) return p - ((p - a).dot(n) / n.squaredNorm()) * n;
+/// u x v with every component accurate to about one ulp of itself, so its direction is right to
+/// ~eps even when u and v are nearly parallel (a sliver's edges; issue 3). The naive product's
+/// components carry errors of eps |u| |v|, which for a triangle whose smallest angle is ~1e-13
+/// turns the normal by ~1 radian.
+Vec3 accurateCross(const Vec3& u, const Vec3& v) {
+  return Vec3(differenceOfProducts(u.y(), v.z(), u.z(), v.y()), differenceOfProducts(u.z(), v.x(), u.x(), v.z()),
+              differenceOfProducts(u.x(), v.y(), u.y(), v.x()));
+}
+
+/// A triangle as the routine sees it: its first corner `origin` and the edge vectors `u`, `v` to
+/// the other two, rounded once. The triangle meant from here on is exactly {origin + s u + t v}
+/// (within eps of the input corners, which moves any distance by at most that), and every test
+/// below uses these same numbers, so the normal, the inside tests and the projection describe one
+/// triangle, not three slightly different ones.
+struct Face {
+  Vec3 origin;
+  Vec3 u;
+  Vec3 v;
+  Vec3 normal;       ///< u x v, accurate (accurateCross); zero when the triangle has no interior
+  double normal2;    ///< |normal|^2
+  Vec3 boxLow;       ///< bounds of the corners relative to origin, grown by `slack`
+  Vec3 boxHigh;
+
+  Face(const Vec3& c0, const Vec3& c1, const Vec3& c2) : origin(c0), u(c1 - c0), v(c2 - c0) {
+    normal = accurateCross(u, v);
+    const double longest2 = std::max({u.squaredNorm(), v.squaredNorm(), (v - u).squaredNorm()});
+    normal2 = normal.squaredNorm();
+    // kDegenerateArea2: no interior to speak of; the triangle then acts as its three edges.
+    if (normal2 <= tolerance::kDegenerateArea2 * longest2 * longest2) {
+      normal = Vec3::Zero();
+      normal2 = 0.0;
+    }
+    const double slack = tolerance::kContactSnapUlps * kEpsilon * std::max(u.cwiseAbs().maxCoeff(), v.cwiseAbs().maxCoeff());
+    boxLow = u.cwiseMin(v).cwiseMin(Vec3::Zero()).array() - slack;
+    boxHigh = u.cwiseMax(v).cwiseMax(Vec3::Zero()).array() + slack;
   }
-  const Vec3 qab = closestOnSegment(p, a, b);
-  const Vec3 qbc = closestOnSegment(p, b, c);
-  const Vec3 qca = closestOnSegment(p, c, a);
-  const double dab = (p - qab).squaredNorm();
-  const double dbc = (p - qbc).squaredNorm();
-  const double dca = (p - qca).squaredNorm();
-  if (dab <= dbc && dab <= dca) return qab;
-  return dbc <= dca ? qbc : qca;
+  bool hasInterior() const { return normal2 > 0.0; }
+  Vec3 corner(int i) const { return i == 0 ? origin : origin + (i == 1 ? u : v); }
+};
+
+/// Closest point to p on the face. The interior candidate, the foot of p on the plane, is taken
+/// only when p lies inside all three edges (signs of triple products with the accurate normal; the
+/// normal component of p drops out of them, so they are the signs of the foot without its
+/// rounding) AND the foot lies in the corners' bounding box. The box is what keeps slivers honest:
+/// near a sliver all three edge lines nearly coincide, so the signs can say "inside" for a point
+/// far beyond a corner along them; such a foot leaves the box, and the edges answer instead.
+Vec3 closestOnFace(const Vec3& p, const Face& f) {
+  const Vec3 r = p - f.origin;
+  if (f.hasInterior()) {
+    const Vec3& n = f.normal;
+    const bool inside = f.u.cross(r).dot(n) >= 0.0 && (f.v - f.u).cross(r - f.u).dot(n) >= 0.0 &&
+                        r.cross(f.v).dot(n) >= 0.0;
+    if (inside) {
+      const Vec3 foot = r - (r.dot(n) / f.normal2) * n;
+      if ((foot.array() >= f.boxLow.array()).all() && (foot.array() <= f.boxHigh.array()).all()) return foot + f.origin;
+    }
+  }
+  const Vec3 c0 = f.origin, c1 = f.corner(1), c2 = f.corner(2);
+  const Vec3 q01 = closestOnSegment(p, c0, c1);
+  const Vec3 q12 = closestOnSegment(p, c1, c2);
+  const Vec3 q20 = closestOnSegment(p, c2, c0);
+  const double d01 = (p - q01).squaredNorm();
+  const double d12 = (p - q12).squaredNorm();
+  const double d20 = (p - q20).squaredNorm();
+  if (d01 <= d12 && d01 <= d20) return q01;
+  return d12 <= d20 ? q12 : q20;
 }
 
-/// Does segment [p, q] seem to meet triangle (a, b, c) with normal n, crossing its plane? Decided
-/// by signs only: p and q on opposite sides of the plane (or one on it) and the
-/// segment's line passing inside all three edges (equal signs of the three triple products). The
-/// crossing point is returned in `hit`. Segments lying in the plane are left to the edge–edge and
-/// vertex–face candidates, which realize their distance.
-bool segmentPiercesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
-                            const Vec3& c, const Vec3& n, Vec3& hit) {
-  if (!(n.squaredNorm() > 0.0)) return false;
-  const double dp = (p - a).dot(n);
-  const double dq = (q - a).dot(n);
+/// Does segment [p, q] seem to meet the face, crossing its plane? Decided by signs only: p and q
+/// on opposite sides of the plane (or one on it) and the segment's line passing inside all three
+/// edges (equal signs of the three triple products). The crossing point is returned in `hit`.
+/// Segments lying in the plane are left to the edge–edge and vertex–face candidates, which realize
+/// their distance.
+bool segmentPiercesFace(const Vec3& p, const Vec3& q, const Face& f, Vec3& hit) {
+  if (!f.hasInterior()) return false;
+  const double dp = (p - f.origin).dot(f.normal);
+  const double dq = (q - f.origin).dot(f.normal);
   if ((dp > 0.0 && dq > 0.0) || (dp < 0.0 && dq < 0.0) || (dp == 0.0 && dq == 0.0)) return false;
+  const Vec3 a = f.origin, b = f.corner(1), c = f.corner(2);
   const Vec3 pq = q - p;
   const double s0 = pq.dot((a - p).cross(b - p));
   const double s1 = pq.dot((b - p).cross(c - p));
@@ -125,8 +173,8 @@ TrianglePairResult triangleDistance(const Vec3& a0In, const Vec3& a1In, const Ve
   const Vec3& origin = a0In;
   const Vec3 a[3] = {Vec3::Zero(), a1In - origin, a2In - origin};
   const Vec3 b[3] = {b0In - origin, b1In - origin, b2In - origin};
-  const Vec3 na = faceNormal(a[0], a[1], a[2]);
-  const Vec3 nb = faceNormal(b[0], b[1], b[2]);
+  const Face faceA(a[0], a[1], a[2]);
+  const Face faceB(b[0], b[1], b[2]);
 
   TrianglePairResult result;
   Best best;
@@ -137,17 +185,17 @@ TrianglePairResult triangleDistance(const Vec3& a0In, const Vec3& a1In, const Ve
   Vec3 hit;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
-    if (segmentPiercesTriangle(a[i], a[j], b[0], b[1], b[2], nb, hit)) {
-      best.offer(hit, closestOnTriangle(hit, b[0], b[1], b[2], nb));
+    if (segmentPiercesFace(a[i], a[j], faceB, hit)) {
+      best.offer(hit, closestOnFace(hit, faceB));
     }
-    if (segmentPiercesTriangle(b[i], b[j], a[0], a[1], a[2], na, hit)) {
-      best.offer(closestOnTriangle(hit, a[0], a[1], a[2], na), hit);
+    if (segmentPiercesFace(b[i], b[j], faceA, hit)) {
+      best.offer(closestOnFace(hit, faceA), hit);
     }
   }
 
   for (int i = 0; i < 3; ++i) {
-    best.offer(a[i], closestOnTriangle(a[i], b[0], b[1], b[2], nb));
-    best.offer(closestOnTriangle(b[i], a[0], a[1], a[2], na), b[i]);
+    best.offer(a[i], closestOnFace(a[i], faceB));
+    best.offer(closestOnFace(b[i], faceA), b[i]);
   }
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {

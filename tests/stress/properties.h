@@ -19,6 +19,11 @@ namespace adsd::stress {
 
 /// Accuracy promised by issues 2 and 3, relative to the scene's bounding-box diagonal.
 inline constexpr double kAccuracy = 1e-10;
+/// The magnitude of the numbers a query computes with: what distance.h's accuracy bound
+/// (kAccuracy x diagonal + tolerance::kBoundSafetyUlps x eps x this) is relative to. The largest
+/// coordinate of either mesh in its own frame (sqrt 3 x the largest |coordinate|) plus the
+/// distance between the two frames' origins: the same in both orders of A and B.
+double workingMagnitude(const StressCase& c);
 /// The oracle's exact intersection predicate is evaluated when the oracle's distance is at most
 /// this x the diagonal (dimensionless). The oracle's distance is exact to ~1e-30 relative, so
 /// farther meshes cannot meet; closer ones need the predicate to say whether they do.
@@ -40,7 +45,13 @@ inline constexpr double kBoxRoundingUlps = 32.0;
 struct Truth {
   double distance = 0.0;   ///< oracle's minimum distance (binary128, rounded to double)
   double diagonal = 0.0;   ///< scene bounding-box diagonal (world frame)
-  double tolerance = 0.0;  ///< kAccuracy x diagonal: the allowed error of any distance answer
+  /// The allowed error of any distance answer: kAccuracy x diagonal, plus the roundoff of the
+  /// working magnitude (tolerance::kBoundSafetyUlps x eps x workingMagnitude), which matters only
+  /// when mesh frames lie far from their geometry (family mesh/offset-frames; distance.h).
+  double tolerance = 0.0;
+  /// The roundoff part of `tolerance` alone (kBoundSafetyUlps x eps x workingMagnitude): how far
+  /// from 0 an answer may put intersecting meshes (at threshold 0) without contradicting them.
+  double roundoff = 0.0;
   /// The exact predicate, evaluated only when distance <= kPredicateBand x diagonal (else false).
   bool intersecting = false;
   double witnessSlack = 0.0;  ///< tolerance plus the rounding allowance of world-frame witnesses

@@ -5,7 +5,8 @@
 ///
 /// Each case is checked with every property of the suite (properties.h: checkCase). A case that
 /// exposes a core bug not yet fixed stays here as DISABLED_ with the bug named, so that main stays
-/// green and the case is one rename away from guarding the fix; fixed ones say where.
+/// green and the case is one rename away from guarding the fix; fixed ones say where. (None is
+/// disabled today.)
 
 #include <gtest/gtest.h>
 
@@ -100,8 +101,10 @@ TEST(StressRegression, ThresholdModeNeverAnswersAnInfiniteDistance) {
   expectAllProperties(pinned("ThresholdModeNeverAnswersAnInfiniteDistance", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_PointBesideASliverIsNotAQuarterUnitAway) {
-  // CORE BUG (triangle routine, slivers): a point 2.4e-13 from a sliver (smallest angle ~1e-7
+TEST(StressRegression, PointBesideASliverIsNotAQuarterUnitAway) {
+  // FIXED in the triangle routine (accurate normal with fma, one Face for normal, inside tests and
+  // projection, and the corners' box guarding the interior candidate; triangle_distance.cpp).
+  // Was: a point 2.4e-13 from a sliver (smallest angle ~1e-7
   // rad, above the kDegenerateArea2 cut of ~1e-15) is reported 0.285 away (0.8% of the scene
   // diagonal 36): the plane-based point-triangle branch is ill-conditioned on slivers.
   // Found as: tri/slivers seed 1 case 15700 (point beside), scale 18.78172332562588, A 1 triangles, B 1 triangles
@@ -137,8 +140,10 @@ TEST(StressRegression, DISABLED_PointBesideASliverIsNotAQuarterUnitAway) {
   expectAllProperties(pinned("PointBesideASliverIsNotAQuarterUnitAway", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_SliverWitnessLiesOnTheSliverAndDistanceIsNotTooSmall) {
-  // CORE BUG (triangle routine, slivers): a triangle corner beside a sliver at coordinates ~6e4;
+TEST(StressRegression, SliverWitnessLiesOnTheSliverAndDistanceIsNotTooSmall) {
+  // FIXED in the triangle routine (accurate normal with fma, one Face for normal, inside tests and
+  // projection, and the corners' box guarding the interior candidate; triangle_distance.cpp).
+  // Was: a triangle corner beside a sliver at coordinates ~6e4;
   // the witness on the sliver lies 5.4e-5 off it (5.5e-10 x diagonal), so the reported distance
   // 0.0010539 is SMALLER than the true 0.0011081: triangle_distance.h promises realized
   // distances only ("never too small").
@@ -175,8 +180,10 @@ TEST(StressRegression, DISABLED_SliverWitnessLiesOnTheSliverAndDistanceIsNotTooS
   expectAllProperties(pinned("SliverWitnessLiesOnTheSliverAndDistanceIsNotTooSmall", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_SegmentCrossingASliverIsContactNotAbove0) {
-  // CORE BUG (triangle routine, slivers): a segment (zero-area triangle) and a sliver that the
+TEST(StressRegression, SegmentCrossingASliverIsContactNotAbove0) {
+  // FIXED in the triangle routine (accurate normal with fma, one Face for normal, inside tests and
+  // projection, and the corners' box guarding the interior candidate; triangle_distance.cpp).
+  // Was: a segment (zero-area triangle) and a sliver that the
   // exact predicate says intersect; the core answers 4.1e-18 (within 1e-10 x diagonal) and so
   // threshold 0 answers aboveThreshold: "proven apart" for intersecting input (a missed
   // collision for a planner).
@@ -214,8 +221,10 @@ TEST(StressRegression, DISABLED_SegmentCrossingASliverIsContactNotAbove0) {
   expectAllProperties(pinned("SegmentCrossingASliverIsContactNotAbove0", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_SegmentCrossingASliverIsWithin1e10OfContact) {
-  // CORE BUG (triangle routine, slivers): a sliver and a segment that intersect (oracle 7.9e-35);
+TEST(StressRegression, SegmentCrossingASliverIsWithin1e10OfContact) {
+  // FIXED in the triangle routine (accurate normal with fma, one Face for normal, inside tests and
+  // projection, and the corners' box guarding the interior candidate; triangle_distance.cpp).
+  // Was: a sliver and a segment that intersect (oracle 7.9e-35);
   // the core answers 2.84e-10 with a scene diagonal of 2.32: error 1.22e-10 x diagonal.
   // Found as: tri/degenerate-near seed 1 case 9928 (sliver and segment), scale 1.198121067342063, A 1 triangles, B 1 triangles
   // (by the first version of that family, whose sliver cases moved to tri/slivers)
@@ -251,8 +260,11 @@ TEST(StressRegression, DISABLED_SegmentCrossingASliverIsWithin1e10OfContact) {
   expectAllProperties(pinned("SegmentCrossingASliverIsWithin1e10OfContact", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_MeshFramesFarFromTheOriginWithOneCommonRotation) {
-  // CORE LIMITATION (frame change): both meshes have vertex coordinates ~250 (3e6 x the scene
+TEST(StressRegression, MeshFramesFarFromTheOriginWithOneCommonRotation) {
+  // Covered by the documented accuracy bound (distance.h: 1e-10 x diagonal + 64 eps x the working
+  // magnitude; properties.h Truth::tolerance), which it must meet. Was a failure against 1e-10 x
+  // diagonal alone:
+  // both meshes have vertex coordinates ~250 (3e6 x the scene
   // of ~8e-5) and the SAME pose. The relative rotation R_A^T R_B is not exactly the identity in
   // double, and B's vertices taken into A's frame round at ulp(250): errors ~1e-14 against a
   // tolerance of 1e-14 (1e-10 x diagonal); up to 3e-8 x diagonal at offsets of 1e8 x scene.
@@ -290,8 +302,11 @@ TEST(StressRegression, DISABLED_MeshFramesFarFromTheOriginWithOneCommonRotation)
   expectAllProperties(pinned("MeshFramesFarFromTheOriginWithOneCommonRotation", a, poseA, b, poseB));
 }
 
-TEST(StressRegression, DISABLED_MeshFramesFarApartTranslatedBack) {
-  // CORE LIMITATION (frame change): mesh A's vertices are ~4e11 from its origin and B's ~3e9
+TEST(StressRegression, MeshFramesFarApartTranslatedBack) {
+  // Covered by the documented accuracy bound (distance.h: 1e-10 x diagonal + 64 eps x the working
+  // magnitude; properties.h Truth::tolerance), which it must meet. Was a failure against 1e-10 x
+  // diagonal alone:
+  // mesh A's vertices are ~4e11 from its origin and B's ~3e9
   // from its own, both translated back next to each other (scene ~7e3). In A's frame B's
   // vertices are ~4e11 and round at ulp(4e11) = 6e-5, above the tolerance of 1e-6.
   // Found as: mesh/offset-vertices seed 1 case 18 (torus and capsule, near, separate offsets), scale 7137.3129082424157, A 1 triangles, B 1 triangles

@@ -5,6 +5,16 @@
 /// One input (two meshes, two poses, options) in, one result out (STYLE habit 1). The caller owns
 /// the scratch memory, one per thread, so that queries allocate nothing once warm and many threads
 /// can query the same meshes at once without locks.
+///
+/// Accuracy. "Exact up to rounding" means: every distance, bound and decision of a query is right
+/// within 1e-10 x the scene's bounding-box diagonal + tolerance::kBoundSafetyUlps x eps x M, where
+/// M is the magnitude of the numbers the query works with: sqrt(3) x (largest |coordinate| of A in
+/// A's frame + the same of B) + |translation of B's pose - translation of A's|. The query works in
+/// mesh A's frame; B's vertices taken into it round at ulp(M), so when mesh frames lie far from
+/// their geometry (coordinates 1e8 x the scene, posed back next to each other) the second term is
+/// what bounds the error (and the inputs themselves carry no more digits than that). Offsets
+/// carried alike by both poses keep M at the scene's own size. Measured by tests/stress against a
+/// binary128 oracle (families mesh/offset-* for the second term).
 
 #include <cstdint>
 #include <limits>
