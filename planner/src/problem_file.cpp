@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -36,11 +40,46 @@ struct SectionHeader {
   int line = 0;
 };
 
+/// The largest |coordinate| of a start, a goal or a volume bound (length units). OMPL measures the
+/// space by its maximum extent, the root of the sum of the squared axis extents: with coordinates
+/// within +-1e150 an extent is at most 2e150 and three squares sum to ~1.2e301, far below the
+/// largest double (1.8e308), so the extent, and the segment length derived from it, stay finite.
+constexpr double kMaxCoordinateMagnitude = 1e150;
+
+/// The longest time limit accepted (seconds). OMPL adds it to the system clock's now() in 64-bit
+/// nanoseconds, which overflow 2^63 ns (292 years) after 1970; 1e8 s (3.2 years) stays far inside.
+constexpr double kMaxTimeLimitSeconds = 1e8;
+
+/// OMPL's StateSpace::setLongestValidSegmentFraction throws unless the fraction f satisfies
+/// eps <= f <= 1 - eps with eps the machine epsilon of double (dimensionless).
+constexpr double kOmplSegmentFractionMargin = std::numeric_limits<double>::epsilon();
+
+/// At most this many characters of a value are echoed in a message (a line may be 8 KB).
+constexpr std::size_t kMaxEchoedCharacters = 60;
+
 std::string trim(const std::string& s) {
   const auto begin = s.find_first_not_of(" \t\r\n");
   if (begin == std::string::npos) return "";
   const auto end = s.find_last_not_of(" \t\r\n");
   return s.substr(begin, end - begin + 1);
+}
+
+/// Text from the file in quotes, shortened to kMaxEchoedCharacters. Lines holding control
+/// characters are rejected by scanLines before anything is echoed, so this only shortens.
+std::string quoted(const std::string& text) {
+  if (text.size() <= kMaxEchoedCharacters) return "'" + text + "'";
+  return "'" + text.substr(0, kMaxEchoedCharacters) + "...'";
+}
+
+/// A control character (other than the tab, which is whitespace) would break the one-line rule of
+/// every message that echoes a key or a value, and no key or value of a problem file holds one.
+/// Returns its position in \p s, or npos.
+std::size_t findControlCharacter(const std::string& s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if ((c < 0x20 && c != '\t') || c == 0x7f) return i;
+  }
+  return std::string::npos;
 }
 
 /// Locates every key and section header by line, following the rules of Boost's config-file
@@ -55,11 +94,19 @@ void scanLines(const std::string& text, const std::string& source, std::vector<E
   int line = 0;
   while (std::getline(in, raw)) {
     ++line;
+    // Windows line ends (CR LF) are accepted: the CR goes with the line end.
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
     const std::string s = trim(raw.substr(0, raw.find('#')));
     if (s.empty()) continue;
+    if (const std::size_t at = findControlCharacter(s); at != std::string::npos) {
+      char code[8];
+      std::snprintf(code, sizeof code, "0x%02x", static_cast<unsigned>(static_cast<unsigned char>(s[at])));
+      throw InputError(source + ":" + std::to_string(line) + ": control character " + code + " at column " +
+                       std::to_string(raw.find(s) + at + 1) + " (keys and values are text on one line)");
+    }
     if (s.front() == '[') {
       if (s.back() != ']' || s.size() < 3) {
-        throw InputError(source + ":" + std::to_string(line) + ": malformed section header '" + s + "'");
+        throw InputError(source + ":" + std::to_string(line) + ": malformed section header " + quoted(s));
       }
       const std::string name = trim(s.substr(1, s.size() - 2));
       sections.push_back({name, line});
@@ -68,8 +115,8 @@ void scanLines(const std::string& text, const std::string& source, std::vector<E
     }
     const auto eq = s.find('=');
     if (eq == std::string::npos || trim(s.substr(0, eq)).empty()) {
-      throw InputError(source + ":" + std::to_string(line) + ": expected 'key = value', a [section] or a comment, got '" +
-                       s + "'");
+      throw InputError(source + ":" + std::to_string(line) + ": expected 'key = value', a [section] or a comment, got " +
+                       quoted(s));
     }
     entries.push_back({prefix + trim(s.substr(0, eq)), trim(s.substr(eq + 1)), line});
   }
@@ -103,17 +150,77 @@ std::vector<Entry> parseWithBoost(const std::string& text, const std::string& so
 
 SourceLocation locate(const std::string& source, const Entry& e) { return {source, e.line, e.key}; }
 
+/// Whether \p v is written as a decimal number: an optional sign, digits with an optional point (at
+/// least one digit), an optional exponent; nothing else. This is the form both strtod and OMPL's
+/// classic-locale conversion read the same way (strtod alone would also take hexadecimal, "inf",
+/// "nan" and leading blanks, which OMPL refuses by throwing).
+bool isDecimalNumber(const std::string& v) {
+  std::size_t i = 0;
+  const auto digitsAt = [&](std::size_t& k) {
+    const std::size_t from = k;
+    while (k < v.size() && std::isdigit(static_cast<unsigned char>(v[k]))) ++k;
+    return k - from;
+  };
+  if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
+  std::size_t digits = digitsAt(i);
+  if (i < v.size() && v[i] == '.') {
+    ++i;
+    digits += digitsAt(i);
+  }
+  if (digits == 0) return false;
+  if (i < v.size() && (v[i] == 'e' || v[i] == 'E')) {
+    ++i;
+    if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
+    if (digitsAt(i) == 0) return false;
+  }
+  return i == v.size();
+}
+
 double parseNumber(const Entry& e, const std::string& source) {
   const std::string& v = e.value;
   if (v.empty()) throw InputError(locate(source, e).describe() + ": expected a number, the value is empty");
   char* end = nullptr;
-  errno = 0;
   const double x = std::strtod(v.c_str(), &end);
-  if (end != v.c_str() + v.size()) {
-    throw InputError(locate(source, e).describe() + ": expected a number, got '" + v + "'");
+  const bool readWhole = end == v.c_str() + v.size();
+  if (readWhole && !std::isfinite(x)) {
+    throw InputError(locate(source, e).describe() + ": expected a finite number, got " + quoted(v));
   }
-  if (!std::isfinite(x) || errno == ERANGE) {
-    throw InputError(locate(source, e).describe() + ": expected a finite number, got '" + v + "'");
+  if (!readWhole || !isDecimalNumber(v)) {
+    throw InputError(locate(source, e).describe() + ": expected a number, got " + quoted(v));
+  }
+  // A value below the smallest double rounds to a subnormal or zero (strtod's ERANGE), as it does
+  // in OMPL's conversion: accepted, and checked by the caller's rule like any other.
+  return x;
+}
+
+/// A coordinate (start, goal, volume): finite and within kMaxCoordinateMagnitude.
+double parseCoordinate(const Entry& e, const std::string& source) {
+  const double x = parseNumber(e, source);
+  if (std::fabs(x) > kMaxCoordinateMagnitude) {
+    throw InputError(locate(source, e).describe() + ": " + quoted(e.value) +
+                     " is too large for a coordinate (at most 1e150 in magnitude)");
+  }
+  return x;
+}
+
+/// A whole number written as digits (an optional '+'), within [\p least, \p most]. OMPL reads whole
+/// parameters with stoul, which would take "1e3" as 1, "2.5" as 2 and "-1" as 2^64 - 1.
+std::uint64_t parseWhole(const Entry& e, const std::string& source, std::uint64_t least, std::uint64_t most) {
+  const std::string& v = e.value;
+  const std::string digits = !v.empty() && v.front() == '+' ? v.substr(1) : v;
+  const bool allDigits = !digits.empty() && std::all_of(digits.begin(), digits.end(), [](unsigned char c) {
+    return std::isdigit(c) != 0;
+  });
+  const std::string range = "from " + std::to_string(least) + " to " + std::to_string(most);
+  if (!allDigits) {
+    throw InputError(locate(source, e).describe() + ": expected a whole number " + range + ", got " + quoted(v));
+  }
+  const std::size_t first = std::min(digits.find_first_not_of('0'), digits.size());
+  // More than 20 significant digits exceeds 64 bits; otherwise strtoull reads it exactly.
+  errno = 0;
+  const unsigned long long x = digits.size() - first > 20 ? 0 : std::strtoull(digits.c_str(), nullptr, 10);
+  if (digits.size() - first > 20 || errno == ERANGE || x < least || x > most) {
+    throw InputError(locate(source, e).describe() + ": expected a whole number " + range + ", got " + quoted(v));
   }
   return x;
 }
@@ -121,15 +228,137 @@ double parseNumber(const Entry& e, const std::string& source) {
 int parsePositiveInt(const Entry& e, const std::string& source) {
   const double x = parseNumber(e, source);
   if (x != std::floor(x) || x < 1 || x > 1e9) {
-    throw InputError(locate(source, e).describe() + ": expected a positive whole number, got '" + e.value + "'");
+    throw InputError(locate(source, e).describe() + ": expected a positive whole number, got " + quoted(e.value));
   }
   return static_cast<int>(x);
 }
 
 double parsePositive(const Entry& e, const std::string& source) {
   const double x = parseNumber(e, source);
-  if (!(x > 0.0)) throw InputError(locate(source, e).describe() + ": expected a number > 0, got '" + e.value + "'");
+  if (!(x > 0.0)) throw InputError(locate(source, e).describe() + ": expected a number > 0, got " + quoted(e.value));
   return x;
+}
+
+/// How a value handed to OMPL as text (si->params() or a planner's params()) must look, so that
+/// OMPL's conversion and setter accept it and it means what it says.
+enum class ValueRule {
+  flag,               ///< 0, 1, true or false (OMPL reads "no", "off" and "0.0" as true)
+  anyReal,            ///< a finite decimal number
+  nonNegative,        ///< >= 0
+  positive,           ///< > 0
+  unitInterval,       ///< in [0, 1]
+  positiveFraction,   ///< in (0, 1]
+  segmentFraction,    ///< in [eps, 1 - eps] (kOmplSegmentFractionMargin)
+  count,              ///< a whole number in [0, 2^32 - 1] (OMPL's unsigned int)
+  positiveCount,      ///< a whole number in [1, 2^32 - 1]
+  text,               ///< passed as written
+};
+
+/// The rule for `[problem]` key \p key, when the key is a parameter of OMPL's SpaceInformation
+/// (OMPL 1.5 declares these two; `sampler` is ours, checked when the problem is built).
+std::optional<ValueRule> spaceParameterRule(const std::string& key) {
+  static const std::map<std::string, ValueRule> rules = {
+      {"longest_valid_segment_fraction", ValueRule::segmentFraction},
+      // Zero makes OMPL throw; it is a multiplier of the number of motion segments.
+      {"valid_segment_count_factor", ValueRule::positiveCount},
+  };
+  const auto it = rules.find(key);
+  if (it == rules.end()) return std::nullopt;
+  return it->second;
+}
+
+/// The rule for planner parameter \p name: every parameter the planners of planner_registry.cpp
+/// declare in OMPL 1.5 (listed from their params()); a name shared by several planners means the
+/// same there. A name none of them declares is never set (the planner warns and ignores it).
+std::optional<ValueRule> plannerParameterRule(const std::string& name) {
+  using R = ValueRule;
+  static const std::map<std::string, ValueRule> rules = {
+      // Switches.
+      {"balanced", R::flag}, {"cache_cc", R::flag}, {"delay_collision_checking", R::flag},
+      {"delay_rewiring_to_first_solution", R::flag}, {"drop_unconnected_samples_on_prune", R::flag},
+      {"extended_fmt", R::flag}, {"find_approximate_solutions", R::flag}, {"focus_search", R::flag},
+      {"heuristics", R::flag}, {"hybridize", R::flag}, {"informed_sampling", R::flag},
+      {"intermediate_states", R::flag}, {"nearest_k", R::flag}, {"new_state_rejection", R::flag},
+      {"optimality", R::flag}, {"ordered_sampling", R::flag}, {"pruned_measure", R::flag},
+      {"sample_rejection", R::flag}, {"shortcut", R::flag}, {"stop_on_each_solution_improvement", R::flag},
+      {"tree_pruning", R::flag}, {"update_children", R::flag}, {"use_admissible_heuristic", R::flag},
+      {"use_graph_pruning", R::flag}, {"use_just_in_time_sampling", R::flag}, {"use_k_nearest", R::flag},
+      {"use_projected_distance", R::flag}, {"use_strict_queue_ordering", R::flag},
+      // Probabilities and fractions.
+      {"goal_bias", R::unitInterval}, {"min_valid_path_fraction", R::unitInterval},
+      {"prune_threshold", R::unitInterval}, {"prune_threshold_as_fractional_cost_change", R::unitInterval},
+      {"frontier_node_ratio", R::unitInterval},
+      // KPIECE throws outside (0, 1]; the SPARS deltas are fractions of the space's extent.
+      {"border_fraction", R::positiveFraction}, {"failed_expansion_score_factor", R::positiveFraction},
+      {"dense_delta_fraction", R::positiveFraction}, {"sparse_delta_fraction", R::positiveFraction},
+      // Lengths and radii (0 for range: OMPL picks one from the space's extent).
+      {"range", R::nonNegative}, {"pruning_radius", R::nonNegative}, {"selection_radius", R::nonNegative},
+      {"frontier_threshold", R::nonNegative}, {"rejection_variant_alpha", R::nonNegative},
+      // Factors and temperatures that divide or multiply.
+      {"epsilon", R::positive}, {"init_temperature", R::positive}, {"temp_change_factor", R::positive},
+      {"radius_multiplier", R::positive}, {"rewire_factor", R::positive}, {"stretch_factor", R::positive},
+      {"cost_threshold", R::anyReal},
+      // Counts (OMPL's unsigned int: a negative number would wrap to about 4e9).
+      {"max_nearest_neighbors", R::count}, {"max_failures", R::count}, {"rejection_variant", R::count},
+      {"degree", R::positiveCount}, {"max_degree", R::positiveCount}, {"min_degree", R::positiveCount},
+      {"max_pts_per_leaf", R::positiveCount}, {"estimated_dimension", R::positiveCount},
+      {"max_hybrid_paths", R::positiveCount}, {"num_planners", R::positiveCount}, {"num_samples", R::positiveCount},
+      {"num_threads", R::positiveCount}, {"number_sampling_attempts", R::positiveCount},
+      {"ordering_batch_size", R::positiveCount}, {"samples_per_batch", R::positiveCount},
+      // AnytimePathShortening's list of planners.
+      {"planners", R::text},
+  };
+  const auto it = rules.find(name);
+  if (it == rules.end()) return std::nullopt;
+  return it->second;
+}
+
+/// Checks \p e's value against \p rule; throws InputError naming file, line and key otherwise.
+void checkValue(const Entry& e, ValueRule rule, const std::string& source) {
+  const auto fail = [&](const std::string& expected) {
+    throw InputError(locate(source, e).describe() + ": expected " + expected + ", got " + quoted(e.value));
+  };
+  constexpr std::uint64_t kUnsignedIntMax = std::numeric_limits<std::uint32_t>::max();
+  switch (rule) {
+    case ValueRule::text:
+      return;
+    case ValueRule::flag: {
+      std::string v = e.value;
+      std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (v != "0" && v != "1" && v != "true" && v != "false") fail("0, 1, true or false");
+      return;
+    }
+    case ValueRule::count:
+      parseWhole(e, source, 0, kUnsignedIntMax);
+      return;
+    case ValueRule::positiveCount:
+      parseWhole(e, source, 1, kUnsignedIntMax);
+      return;
+    default:
+      break;
+  }
+  const double x = parseNumber(e, source);
+  switch (rule) {
+    case ValueRule::nonNegative:
+      if (!(x >= 0.0)) fail("a number >= 0");
+      break;
+    case ValueRule::positive:
+      if (!(x > 0.0)) fail("a number > 0");
+      break;
+    case ValueRule::unitInterval:
+      if (!(x >= 0.0 && x <= 1.0)) fail("a number from 0 to 1");
+      break;
+    case ValueRule::positiveFraction:
+      if (!(x > 0.0 && x <= 1.0)) fail("a number > 0 and <= 1");
+      break;
+    case ValueRule::segmentFraction:
+      if (!(x >= kOmplSegmentFractionMargin && x <= 1.0 - kOmplSegmentFractionMargin)) {
+        fail("a number > 0 and < 1 (OMPL's bounds: 2.2e-16 to 1 - 2.2e-16)");
+      }
+      break;
+    default:
+      break;
+  }
 }
 
 bool parseFlag(const Entry& e, const std::string& source) {
@@ -168,6 +397,7 @@ class ProblemKeys {
     return it->second;
   }
   double number(const std::string& key) const { return parseNumber(get(key), source_); }
+  double coordinate(const std::string& key) const { return parseCoordinate(get(key), source_); }
 
  private:
   std::string source_;
@@ -179,13 +409,13 @@ ProblemPose readPose(const ProblemKeys& keys, const std::string& which, RigidBod
                      const std::string& source) {
   ProblemPose pose;
   pose.location = locate(source, keys.get(which + ".x"));
-  pose.position.x() = keys.number(which + ".x");
-  pose.position.y() = keys.number(which + ".y");
+  pose.position.x() = keys.coordinate(which + ".x");
+  pose.position.y() = keys.coordinate(which + ".y");
   pose.theta = keys.number(which + ".theta");
   if (space == RigidBodySpace::se3) {
-    pose.position.z() = keys.number(which + ".z");
+    pose.position.z() = keys.coordinate(which + ".z");
     pose.axis = Vec3(keys.number(which + ".axis.x"), keys.number(which + ".axis.y"), keys.number(which + ".axis.z"));
-    if (pose.axis.norm() == 0.0 && pose.theta != 0.0) {
+    if (pose.axis.cwiseAbs().maxCoeff() == 0.0 && pose.theta != 0.0) {
       throw InputError(locate(source, keys.get(which + ".axis.x")).describe() +
                        ": the rotation axis is zero but the angle is not");
     }
@@ -201,6 +431,7 @@ const std::set<std::string>& se3OnlyPoseKeys() {
 void readProblemSection(const std::vector<Entry>& entries, int sectionLine, const std::string& source,
                         ProblemFile& file) {
   ProblemKeys keys(source, sectionLine);
+  std::map<std::string, int> spaceParameterLines;  // each space parameter at most once
   static const std::set<std::string> geometryKeys = {
       "name", "robot", "world", "objective", "objective.threshold", "threshold",
       "volume.min.x", "volume.min.y", "volume.min.z", "volume.max.x", "volume.max.y", "volume.max.z"};
@@ -214,8 +445,16 @@ void readProblemSection(const std::vector<Entry>& entries, int sectionLine, cons
     if (poseKey || geometryKeys.count(key) != 0) {
       keys.add(e);
     } else {
-      // sampler, longest_valid_segment_fraction, ...: space-information parameters, checked when
-      // they are applied (planning_problem.cpp).
+      // sampler, longest_valid_segment_fraction, ...: space-information parameters. OMPL's own
+      // ones are checked here, so that OMPL neither throws on them nor takes a value that breaks
+      // its motion checking; `sampler` and unknown keys when the problem is built
+      // (planning_problem.cpp).
+      const auto [it, inserted] = spaceParameterLines.emplace(key, e.line);
+      if (!inserted) {
+        throw InputError(locate(source, e).describe() + ": repeated (first at line " + std::to_string(it->second) +
+                         ")");
+      }
+      if (const std::optional<ValueRule> rule = spaceParameterRule(key)) checkValue(e, *rule, source);
       file.spaceParameters.push_back({key, e.value, locate(source, e)});
     }
     if (poseKey) {
@@ -256,13 +495,13 @@ void readProblemSection(const std::vector<Entry>& entries, int sectionLine, cons
   const bool anyVolume = std::any_of(volumeKeys.begin(), volumeKeys.end(), [&](const std::string& k) { return keys.has(k); });
   if (anyVolume) {
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-    lo.x() = keys.number("volume.min.x");
-    lo.y() = keys.number("volume.min.y");
-    hi.x() = keys.number("volume.max.x");
-    hi.y() = keys.number("volume.max.y");
+    lo.x() = keys.coordinate("volume.min.x");
+    lo.y() = keys.coordinate("volume.min.y");
+    hi.x() = keys.coordinate("volume.max.x");
+    hi.y() = keys.coordinate("volume.max.y");
     if (file.space == RigidBodySpace::se3) {
-      lo.z() = keys.number("volume.min.z");
-      hi.z() = keys.number("volume.max.z");
+      lo.z() = keys.coordinate("volume.min.z");
+      hi.z() = keys.coordinate("volume.max.z");
     }
     const int dims = file.space == RigidBodySpace::se3 ? 3 : 2;
     const char* axes[] = {"x", "y", "z"};
@@ -297,6 +536,10 @@ void readBenchmarkSection(const std::vector<Entry>& entries, const std::string& 
     BenchmarkSection& b = file.benchmark;
     if (key == "time_limit") {
       b.timeLimit = parsePositive(e, source);
+      if (*b.timeLimit > kMaxTimeLimitSeconds) {
+        throw InputError(locate(source, e).describe() + ": " + quoted(e.value) +
+                         " seconds is longer than the clock can count (at most 1e8)");
+      }
     } else if (key == "mem_limit") {
       b.memoryLimit = parsePositive(e, source);
     } else if (key == "run_count") {
@@ -348,6 +591,7 @@ void readPlannerSection(const std::vector<Entry>& entries, const std::string& so
     if (parameter == "name") {
       latest->label = e.value;
     } else {
+      if (const std::optional<ValueRule> rule = plannerParameterRule(parameter)) checkValue(e, *rule, source);
       latest->parameters.push_back({parameter, e.value, locate(source, e)});
     }
   }
@@ -365,9 +609,11 @@ std::string SourceLocation::describe() const {
 Pose ProblemPose::toPose() const {
   Pose pose = Pose::Identity();
   pose.translate(position);
-  const double n = axis.norm();
+  // Scaled by its largest component before normalizing: the norm of an axis with components near
+  // 1e200 would overflow (and one near 1e-200 underflow) if taken directly.
+  const double largest = axis.cwiseAbs().maxCoeff();
   // A zero axis is only accepted with a zero angle (readPose): the identity rotation.
-  if (n > 0.0) pose.rotate(Eigen::AngleAxisd(theta, axis / n));
+  if (largest > 0.0) pose.rotate(Eigen::AngleAxisd(theta, (axis / largest).normalized()));
   return pose;
 }
 

@@ -227,5 +227,129 @@ TEST(ProblemFileErrors, BinaryGarbage) {
   EXPECT_EQ(errorOf(std::string("[problem]\n\0\x01\x02", 13)), ": not a text file (contains a NUL byte)");
 }
 
+TEST(ProblemFileErrors, NumbersMustBeDecimal) {
+  // strtod would read these; OMPL's conversion throws on them, so neither place may take them.
+  std::string hex = kSe3Start;
+  hex.replace(hex.find("start.x = 1"), 11, "start.x = 0x10");
+  EXPECT_EQ(errorOf(hex), ":4: key 'problem.start.x': expected a number, got '0x10'");
+  std::string comma = kSe3Start;
+  comma.replace(comma.find("goal.x = 0"), 10, "goal.x = 0,5");
+  EXPECT_EQ(errorOf(comma), ":11: key 'problem.goal.x': expected a number, got '0,5'");
+}
+
+TEST(ProblemFileErrors, CoordinatesLargeEnoughToOverflowTheSpaceExtent) {
+  // OMPL's maximum extent squares the volume's extents: 1e200 would make it infinite.
+  std::string start = kSe3Start;
+  start.replace(start.find("start.y = 2"), 11, "start.y = 1e200");
+  EXPECT_EQ(errorOf(start),
+            ":5: key 'problem.start.y': '1e200' is too large for a coordinate (at most 1e150 in magnitude)");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) +
+                    "volume.min.x = -1e151\nvolume.min.y = 0\nvolume.min.z = 0\nvolume.max.x = 1\n"
+                    "volume.max.y = 1\nvolume.max.z = 1\n"),
+            ":18: key 'problem.volume.min.x': '-1e151' is too large for a coordinate (at most 1e150 in magnitude)");
+}
+
+TEST(ProblemFile, AnAxisOfExtremeMagnitudeIsStillARotation) {
+  ScratchDir dir;
+  std::string text = kSe3Start;
+  text.replace(text.find("start.axis.z = 2"), 16, "start.axis.z = 1e300");
+  text.replace(text.find("goal.axis.x = 1"), 15, "goal.axis.x = 1e-300");
+  text.replace(text.find("goal.theta = 0"), 14, "goal.theta = 1.5707963267948966");
+  const ProblemFile p = readProblemFile(dir.write("axis.cfg", text));
+  const Pose start = p.start.toPose(), goal = p.goal.toPose();
+  ASSERT_TRUE(start.matrix().allFinite());
+  ASSERT_TRUE(goal.matrix().allFinite());
+  EXPECT_TRUE((start.linear() * Vec3::UnitX()).isApprox(Vec3::UnitY()));  // 90 degrees about z
+  EXPECT_TRUE((goal.linear() * Vec3::UnitY()).isApprox(Vec3::UnitZ()));   // 90 degrees about x
+}
+
+// Fuzz finding (tests/fuzz/regressions/problem_file/segment_fraction_out_of_range.cfg): a value
+// passed through to OMPL's space information made OMPL throw its own exception ("The fraction of
+// the extent must be larger than 0 and less than 1"), or one it cannot convert ("Failed
+// converting string to real number", ompl_set_param_throws.cfg), escaping the library.
+TEST(ProblemFileErrors, SpaceParametersOmplWouldRefuseNameTheKey) {
+  const std::string key = ":18: key 'problem.longest_valid_segment_fraction': ";
+  const std::string fraction = "expected a number > 0 and < 1 (OMPL's bounds: 2.2e-16 to 1 - 2.2e-16), got ";
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "longest_valid_segment_fraction = 0\n"), key + fraction + "'0'");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "longest_valid_segment_fraction = 1\n"), key + fraction + "'1'");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "longest_valid_segment_fraction = 1e-17\n"), key + fraction + "'1e-17'");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "longest_valid_segment_fraction = 0,01\n"),
+            key + "expected a number, got '0,01'");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "longest_valid_segment_fraction = 0.01\n"
+                                             "longest_valid_segment_fraction = 0.02\n"),
+            ":19: key 'problem.longest_valid_segment_fraction': repeated (first at line 18)");
+  // A negative count would wrap to ~4e9 segments per motion (a hang), 1.5 would be read as 1.
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "valid_segment_count_factor = -3\n"),
+            ":18: key 'problem.valid_segment_count_factor': expected a whole number from 1 to 4294967295, got '-3'");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "valid_segment_count_factor = 1.5\n"),
+            ":18: key 'problem.valid_segment_count_factor': expected a whole number from 1 to 4294967295, got '1.5'");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "valid_segment_count_factor = 0\n"),
+            ":18: key 'problem.valid_segment_count_factor': expected a whole number from 1 to 4294967295, got '0'");
+}
+
+TEST(ProblemFileErrors, PlannerParametersOmplWouldMisreadNameTheKey) {
+  const std::string planners = std::string(kSe3Start) + "[planner]\nprm =\nrrtstar =\nkpiece =\n";
+  // PRM: -1 wraps to 2^32 - 1 neighbours (std::bad_alloc); 1e3 would be read as 1.
+  EXPECT_EQ(errorOf(planners + "prm.max_nearest_neighbors = -1\n"),
+            ":22: key 'planner.prm.max_nearest_neighbors': expected a whole number from 0 to 4294967295, got '-1'");
+  EXPECT_EQ(errorOf(planners + "prm.max_nearest_neighbors = 1e3\n"),
+            ":22: key 'planner.prm.max_nearest_neighbors': expected a whole number from 0 to 4294967295, got '1e3'");
+  EXPECT_EQ(errorOf(planners + "prm.max_nearest_neighbors = 4294967296\n"),
+            ":22: key 'planner.prm.max_nearest_neighbors': expected a whole number from 0 to 4294967295, got "
+            "'4294967296'");
+  EXPECT_EQ(errorOf(planners + "rrtstar.range = -0.5\n"),
+            ":22: key 'planner.rrtstar.range': expected a number >= 0, got '-0.5'");
+  EXPECT_EQ(errorOf(planners + "rrtstar.range = inf\n"),
+            ":22: key 'planner.rrtstar.range': expected a finite number, got 'inf'");
+  EXPECT_EQ(errorOf(planners + "rrtstar.goal_bias = 1.5\n"),
+            ":22: key 'planner.rrtstar.goal_bias': expected a number from 0 to 1, got '1.5'");
+  // OMPL reads "no" as true.
+  EXPECT_EQ(errorOf(planners + "rrtstar.delay_collision_checking = no\n"),
+            ":22: key 'planner.rrtstar.delay_collision_checking': expected 0, 1, true or false, got 'no'");
+  // KPIECE1::setBorderFraction throws outside (0, 1].
+  EXPECT_EQ(errorOf(planners + "kpiece.border_fraction = 0\n"),
+            ":22: key 'planner.kpiece.border_fraction': expected a number > 0 and <= 1, got '0'");
+}
+
+TEST(ProblemFile, PlannerParametersOmplReadsAlikeAreKept) {
+  ScratchDir dir;
+  const ProblemFile p = readProblemFile(dir.write(
+      "ok.cfg", std::string(kSe3Start) + "longest_valid_segment_fraction = 5e-3\nvalid_segment_count_factor = +2\n"
+                                         "[planner]\nrrtstar =\nrrtstar.range = .5\nrrtstar.delay_collision_checking = "
+                                         "False\nrrtstar.rewire_factor = 1.2E0\nprm =\nprm.max_nearest_neighbors = "
+                                         "007\nanytimepathshortening =\nanytimepathshortening.planners = rrt,prm\n"
+                                         "rrtstar.no_such_parameter = whatever\n"));
+  ASSERT_EQ(p.spaceParameters.size(), 2u);
+  ASSERT_EQ(p.planners.size(), 3u);
+  EXPECT_EQ(p.planners[0].parameters.size(), 4u);  // an unknown name is the planner's to ignore
+  EXPECT_EQ(p.planners[2].parameters[0].value, "rrt,prm");
+}
+
+TEST(ProblemFileErrors, TimeLimitsBeyondTheClock) {
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "[benchmark]\ntime_limit = 1e300\n"),
+            ":19: key 'benchmark.time_limit': '1e300' seconds is longer than the clock can count (at most 1e8)");
+}
+
+// Fuzz finding (tests/fuzz/regressions/problem_file/carriage_return_in_message.cfg): the three
+// bytes ".\r." were echoed into the message, which then spanned two lines on a terminal.
+TEST(ProblemFileErrors, ControlCharactersAreNamedNotEchoed) {
+  EXPECT_EQ(errorOf(".\r."), ":1: control character 0x0d at column 2 (keys and values are text on one line)");
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "name = a\x1b[2Jb\n"),
+            ":18: control character 0x1b at column 9 (keys and values are text on one line)");
+  // Windows line ends are line ends.
+  std::string crlf;
+  for (const char c : std::string(kSe3Start)) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  ScratchDir dir;
+  const ProblemFile p = readProblemFile(dir.write("crlf.cfg", crlf));
+  EXPECT_EQ(p.robotPath, (dir.root() / "r.dae").string());
+  EXPECT_EQ(p.goal.location.line, 11);
+}
+
+TEST(ProblemFileErrors, LongValuesAreShortenedInMessages) {
+  std::string text = kSe3Start;
+  text.replace(text.find("start.y = 2"), 11, "start.y = " + std::string(500, 'x'));
+  EXPECT_EQ(errorOf(text), ":5: key 'problem.start.y': expected a number, got '" + std::string(60, 'x') + "...'");
+}
+
 }  // namespace
 }  // namespace adsd::planner

@@ -136,13 +136,12 @@ TEST(BadInputCatalogue, DISABLED_NanCoordinateIsReportedWhereverTheVertexIs) {
   EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
 }
 
-// DISABLED: a bug in planner/src/planning_problem.cpp (reported to the lead; enable once fixed).
-// OMPL's ParamSet::setParam throws std::runtime_error ("Failed converting string to real number")
-// for a value that is not a number instead of returning false, so the InputError branch is never
-// reached: the library lets a foreign exception out, and `adsd plan` reports an "internal error"
-// with exit status 1 instead of 2. Reproducer: any valid cfg plus the line
+// A value OMPL cannot convert: OMPL's ParamSet::setParam throws std::runtime_error ("Failed
+// converting string to real number") instead of returning false, so the problem-file reader
+// checks every value it hands to OMPL (fixed there; before, `adsd plan` said "internal error",
+// exit 1). Reproducer: any valid cfg plus the line
 //   longest_valid_segment_fraction = lots
-TEST(BadInputCatalogue, DISABLED_AValueOmplRejectsNamesTheKey) {
+TEST(BadInputCatalogue, AValueOmplRejectsNamesTheKey) {
   Scratch dir;
   writeMeshes(dir);
   const std::string cfg =

@@ -135,6 +135,14 @@ expect_bad_input(NEEDLES "inf_robot.cfg:2: key 'problem.robot'" "inf_robot.obj" 
 write_cfg(stl_world.cfg "[problem]\nrobot = robot.obj\nworld = truncated.stl\n${good_start}${good_goal}${volume}")
 expect_bad_input(NEEDLES "stl_world.cfg:3: key 'problem.world'" "truncated binary STL" ARGS plan stl_world.cfg --path out.path)
 
+# Values handed to OMPL: one it cannot convert (it threw, "internal error", exit 1, before the
+# reader checked them), one it refuses by throwing, one that would wrap around (a count of -1).
+write_cfg(ompl_value.cfg "[problem]\nrobot = robot.obj\nworld = world.obj\n${good_start}${good_goal}${volume}longest_valid_segment_fraction = lots\n")
+expect_bad_input(NEEDLES "ompl_value.cfg:14: key 'problem.longest_valid_segment_fraction'" "expected a number" ARGS plan ompl_value.cfg --path out.path)
+write_cfg(ompl_fraction.cfg "[problem]\nrobot = robot.obj\nworld = world.obj\n${good_start}${good_goal}${volume}longest_valid_segment_fraction = 0\n")
+expect_bad_input(NEEDLES "ompl_fraction.cfg:14: key 'problem.longest_valid_segment_fraction'" "> 0 and < 1" ARGS plan ompl_fraction.cfg --path out.path)
+write_cfg(planner_count.cfg "[problem]\nrobot = robot.obj\nworld = world.obj\n${good_start}${good_goal}${volume}[planner]\nprm =\nprm.max_nearest_neighbors = -1\n")
+expect_bad_input(NEEDLES "planner_count.cfg:16: key 'planner.prm.max_nearest_neighbors'" "whole number" ARGS plan planner_count.cfg --path out.path)
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} of ${checks} bad-input checks failed")
 endif()

@@ -101,9 +101,15 @@ struct ProblemFile {
 };
 
 /// \brief Reads and checks a problem file. Throws adsd::InputError for a missing or unreadable
-/// file, a syntax error, a missing or repeated key, a value of the wrong type or not finite, an
-/// inconsistent SE(2)/SE(3) key set, an inverted volume, a `control` key (kinodynamic problems
-/// are out of scope), or a repeated [problem] or [benchmark] section. Mesh files are not opened.
+/// file, a syntax error, a control character in a line (CR LF line ends are accepted), a missing
+/// or repeated key, a value of the wrong type or not finite, a coordinate beyond 1e150 in
+/// magnitude, an inconsistent SE(2)/SE(3) key set, an inverted volume, a time limit beyond 1e8 s,
+/// a `control` key (kinodynamic problems are out of scope), or a repeated [problem] or [benchmark]
+/// section. Every value handed to OMPL as text (the space information's
+/// `longest_valid_segment_fraction` and `valid_segment_count_factor`, and each parameter the
+/// registry's planners declare) is checked against what OMPL converts and accepts, so that OMPL
+/// neither throws on it nor misreads it (OMPL reads "1e3" as the count 1, "-1" as 2^32 - 1 and
+/// "no" as true). Mesh files are not opened.
 ProblemFile readProblemFile(const std::string& path);
 
 /// \brief The same from text; \p sourceName names it in messages and \p directory resolves
