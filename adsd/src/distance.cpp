@@ -249,7 +249,14 @@ DistanceResult Query::run() {
     treeB_ = b_.hierarchy();
     orderA_ = treeA_->order().data();
     orderB_ = treeB_->order().data();
-    visit(nodeA(0), nodeB(0), 0, start);
+    // Validity queries need no minimum, only a proof either way: the box-and-triangle traversal
+    // of tree_traversal.cpp decides them without GJK or hashing. The others descend the trees
+    // with the paper's stages (sec. 4-6) on node pairs.
+    if (options_.mode == QueryMode::threshold) {
+      traverseTrees();
+    } else {
+      visit(nodeA(0), nodeB(0), 0, start);
+    }
     return finish();
   }
   buf_.orderA.resize(nA);

@@ -80,6 +80,23 @@ class Query {
   /// spheres' gap and the separating-axis gaps along the six face normals of the two boxes.
   double nodeLowerBound(std::int32_t na, std::int32_t nb) const;
   void testAllPairs(const SubMesh& a, const SubMesh& b);
+  // --- queries with hierarchies (tree_traversal.cpp) ---
+  /// Depth-first over both trees, nearest pairs first, box tests before triangle tests; a
+  /// threshold query stops at the first triangle pair within the threshold.
+  void traverseTrees();
+  /// What pairs must be proven farther than (before the roundoff allowance) to be dropped: the
+  /// global upper bound of sec. 6.2, or the threshold, cap or tolerance the mode allows.
+  double pruneBound() const;
+  /// Tests the live triangle pairs of two leaves (bit k of a mask: triangle t0 + k), dropping
+  /// those proven farther than `bound` (= limit + roundoff); both fall as the upper bound does.
+  void testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, const MeshHierarchy::Node& nb,
+                    std::uint32_t maskB, double& limit, double& bound);
+  /// The live triangles of a leaf of A (B) not proven farther than `bound` from a box of the
+  /// other tree (in the other mesh's frame).
+  std::uint32_t leafTrianglesNearA(const MeshHierarchy::Node& leaf, std::uint32_t mask, const OrientedBox& boxOfB,
+                                   double bound) const;
+  std::uint32_t leafTrianglesNearB(const MeshHierarchy::Node& leaf, std::uint32_t mask, const OrientedBox& boxOfA,
+                                   double bound) const;
   /// Appends the distinct vertices of triangles order[t0, t1) to `list`; returns the sub-mesh.
   static SubMesh collectVertices(const Mesh& mesh, const std::vector<std::uint32_t>& order, std::uint32_t t0,
                                  std::uint32_t t1, std::vector<std::uint32_t>& list,

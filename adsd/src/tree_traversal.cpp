@@ -1,0 +1,213 @@
+// Queries between two rigid meshes with sub-mesh trees: a depth-first traversal of node pairs,
+// nearest first, each pair dropped by the cheapest sound test that proves it cannot matter.
+//
+// The paper's stages exist to find and cull without preprocessing (sec. 4-6). With trees built
+// once, the boxes already hold what GJK and the hash grid would work out per query, so neither
+// runs here: a node pair is dropped when its boxes are proven farther apart than the current
+// bound (sec. 6.2's rejection rule: for exact queries the global upper bound, for validity
+// queries the threshold D), or else the larger node is split. Leaves' triangles are tested
+// against the other node's box and against each other's (filters that only ever prove
+// "farther"), and only the pairs no filter separates reach the exact triangle distance. A
+// validity query stops at the first triangle pair within D.
+
+#include <algorithm>
+
+#include "adsd/triangle_distance.h"
+#include "box_separation.h"
+#include "query.h"
+#include "triangle_box_separation.h"
+#include "triangle_separation.h"
+
+namespace adsd::detail {
+
+namespace {
+
+/// Node pairs waiting on the traversal stack at most. Each pop pushes at most two pairs and the
+/// trees are median-split (depth <= 32 for 2^32 triangles), so the stack never holds more than
+/// depthA + depthB + 2 entries.
+constexpr int kTraversalStackSize = 160;
+
+/// How large a box is, for choosing which node of a pair to split: the larger one, as halving
+/// a small robot part against a room-sized node only multiplies the pairs.
+inline double boxSize2(const OrientedBox& box) { return box.half.squaredNorm(); }
+
+/// A leaf's mask with all its triangles live (bit k for triangle t0 + k).
+constexpr std::uint32_t kAllLeafTriangles = ~0u;
+static_assert(MeshHierarchy::kLeafTriangles < 32, "a leaf's live triangles are the bits of a 32-bit mask");
+
+/// The bits a leaf's triangles occupy in a mask.
+inline std::uint32_t leafBits(const MeshHierarchy::Node& leaf) { return (1u << (leaf.t1 - leaf.t0)) - 1u; }
+
+}  // namespace
+
+double Query::pruneBound() const {
+  // Pairs proven farther than the returned value cannot change the answer; every caller adds the
+  // roundoff allowance, so "proven farther than pruneBound() + roundoff_" means the true distance
+  // exceeds pruneBound().
+  switch (options_.mode) {
+    case QueryMode::threshold: return options_.threshold;
+    case QueryMode::cap: return std::min(best_, options_.cap);
+    case QueryMode::tolerance:
+      // skip()'s rule solved for the pair's lower bound L: L + max(abs, rel L) >= best.
+      return std::max(0.0, std::min(best_ - options_.absTolerance, best_ / (1.0 + options_.relTolerance)));
+    case QueryMode::exact: break;
+  }
+  return best_;
+}
+
+void Query::traverseTrees() {
+  const std::vector<MeshHierarchy::Node>& nodesA = treeA_->nodes();
+  const std::vector<MeshHierarchy::Node>& nodesB = treeB_->nodes();
+  // Pairs proven farther than `bound` (the limit plus the roundoff allowance, so that the true
+  // distance of a dropped pair exceeds the limit) are dropped; it falls whenever a triangle pair improves the
+  // global upper bound (sec. 6.2), except in threshold mode where it is D throughout.
+  double limit = pruneBound();
+  double bound = limit + roundoff_;
+  // Every pair dropped was proven farther than the limit at the time: the smallest of those is a
+  // lower bound for the result's interval (in threshold mode D itself, as the status promises).
+  auto dropped = [&] { minSkippedLower_ = std::min(minSkippedLower_, limit); };
+
+  // A pair of nodes still to decide, with the lower bound found for it (the order's key, checked
+  // again when popped: the bound may have fallen meanwhile). When a node is a leaf, its mask says
+  // which of its triangles are not yet proven farther than the bound from the other node (bit k:
+  // triangle t0 + k): a triangle far from a box is far from everything the box holds.
+  struct Pending {
+    std::int32_t a, b;
+    int depth;
+    std::uint32_t maskA, maskB;
+    double lower;
+  };
+  Pending stack[kTraversalStackSize];
+  int top = 0;
+  // Tests a pair; returns false when it was dropped, else fills `out`.
+  auto test = [&](std::int32_t a, std::int32_t b, int depth, std::uint32_t maskA, std::uint32_t maskB, Pending& out) {
+    ++counters_.subMeshPairs;
+    counters_.maxDepth = std::max(counters_.maxDepth, depth);
+    const MeshHierarchy::Node& na = nodesA[a];
+    const MeshHierarchy::Node& nb = nodesB[b];
+    const double lower = boxLowerBound(na.box, nb.box, rotationBA_, translationBA_, bound);
+    if (lower > bound) {
+      ++counters_.pairsRejectedByBounds;
+      dropped();
+      return false;
+    }
+    // A leaf facing a larger node, or the larger of two leaves: its triangles against the other
+    // box (the smaller leaf's own box is tight already, the larger one's may be fat: a floor and a
+    // wall triangle of an environment fill a room corner).
+    const bool refineA = na.isLeaf() && (!nb.isLeaf() || boxSize2(na.box) > boxSize2(nb.box));
+    const bool refineB = nb.isLeaf() && !refineA;
+    if (refineA || refineB) {
+      const std::uint32_t mask = refineA ? (maskA = leafTrianglesNearA(na, maskA, nb.box, bound))
+                                         : (maskB = leafTrianglesNearB(nb, maskB, na.box, bound));
+      if (mask == 0) {
+        ++counters_.pairsRejectedByBounds;
+        dropped();
+        return false;
+      }
+    }
+    out = Pending{a, b, depth, maskA, maskB, lower};
+    return true;
+  };
+  // Pushes the pairs that survive, the nearer (smaller lower bound) last so that it is popped
+  // first: the upper bound falls fastest that way, and a validity query's proof comes sooner.
+  auto pushNearestLast = [&](int count, Pending* candidates) {
+    if (count == 2 && candidates[0].lower < candidates[1].lower) std::swap(candidates[0], candidates[1]);
+    for (int k = 0; k < count; ++k) stack[top++] = candidates[k];
+  };
+
+  Pending root;
+  if (test(0, 0, 0, kAllLeafTriangles, kAllLeafTriangles, root)) stack[top++] = root;
+  while (top > 0 && !done_) {
+    const Pending p = stack[--top];
+    if (p.lower > bound) {  // the bound fell below this pair's since it was pushed
+      ++counters_.pairsRejectedByBounds;
+      dropped();
+      continue;
+    }
+    const MeshHierarchy::Node& na = nodesA[p.a];
+    const MeshHierarchy::Node& nb = nodesB[p.b];
+    if (na.isLeaf() && nb.isLeaf()) {
+      testLeafPair(na, p.maskA, nb, p.maskB, limit, bound);
+      continue;
+    }
+    ++counters_.pairsSplit;
+    const bool splitA = !na.isLeaf() && (nb.isLeaf() || boxSize2(na.box) >= boxSize2(nb.box));
+    Pending children[2];
+    int count = 0;
+    if (splitA) {
+      count += test(na.left, p.b, p.depth + 1, kAllLeafTriangles, p.maskB, children[count]);
+      count += test(na.right, p.b, p.depth + 1, kAllLeafTriangles, p.maskB, children[count]);
+    } else {
+      count += test(p.a, nb.left, p.depth + 1, p.maskA, kAllLeafTriangles, children[count]);
+      count += test(p.a, nb.right, p.depth + 1, p.maskA, kAllLeafTriangles, children[count]);
+    }
+    pushNearestLast(count, children);
+  }
+}
+
+std::uint32_t Query::leafTrianglesNearA(const MeshHierarchy::Node& leaf, std::uint32_t mask, const OrientedBox& boxOfB,
+                                        double bound) const {
+  // B's box in A's frame.
+  OrientedBox box;
+  box.axes = rotationBA_ * boxOfB.axes;
+  box.center = toA(boxOfB.center);
+  box.half = boxOfB.half;
+  mask &= leafBits(leaf);
+  for (std::uint32_t i = leaf.t0; i < leaf.t1; ++i) {
+    const std::uint32_t bit = 1u << (i - leaf.t0);
+    if ((mask & bit) == 0) continue;
+    const std::uint32_t t = orderA_[i];
+    const Vec3 corners[3] = {a_.corner(t, 0), a_.corner(t, 1), a_.corner(t, 2)};
+    if (triangleFartherFromBox(corners, box, bound)) mask &= ~bit;
+  }
+  return mask;
+}
+
+std::uint32_t Query::leafTrianglesNearB(const MeshHierarchy::Node& leaf, std::uint32_t mask, const OrientedBox& boxOfA,
+                                        double bound) const {
+  // A's box in B's frame: B's triangles then need no transform.
+  OrientedBox box;
+  box.axes = rotationAB_ * boxOfA.axes;
+  box.center = rotationAB_ * (boxOfA.center - translationBA_);
+  box.half = boxOfA.half;
+  mask &= leafBits(leaf);
+  for (std::uint32_t i = leaf.t0; i < leaf.t1; ++i) {
+    const std::uint32_t bit = 1u << (i - leaf.t0);
+    if ((mask & bit) == 0) continue;
+    const std::uint32_t t = orderB_[i];
+    const Vec3 corners[3] = {b_.corner(t, 0), b_.corner(t, 1), b_.corner(t, 2)};
+    if (triangleFartherFromBox(corners, box, bound)) mask &= ~bit;
+  }
+  return mask;
+}
+
+void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, const MeshHierarchy::Node& nb,
+                         std::uint32_t maskB, double& limit, double& bound) {
+  // B's live triangles in A's frame once per leaf pair (a leaf holds at most kLeafTriangles).
+  Vec3 cornersB[MeshHierarchy::kLeafTriangles][3];
+  for (std::uint32_t j = nb.t0; j < nb.t1; ++j) {
+    if ((maskB >> (j - nb.t0) & 1u) == 0) continue;
+    for (int k = 0; k < 3; ++k) cornersB[j - nb.t0][k] = toA(b_.corner(orderB_[j], k));
+  }
+  for (std::uint32_t i = na.t0; i < na.t1; ++i) {
+    if ((maskA >> (i - na.t0) & 1u) == 0) continue;
+    const std::uint32_t ta = orderA_[i];
+    const Vec3 cornersA[3] = {a_.corner(ta, 0), a_.corner(ta, 1), a_.corner(ta, 2)};
+    for (std::uint32_t j = nb.t0; j < nb.t1; ++j) {
+      if ((maskB >> (j - nb.t0) & 1u) == 0) continue;
+      const Vec3* q = cornersB[j - nb.t0];
+      if (trianglesFartherThan(cornersA, q, bound)) {
+        minSkippedLower_ = std::min(minSkippedLower_, limit);
+        continue;
+      }
+      const TrianglePairResult t = triangleDistance(cornersA[0], cornersA[1], cornersA[2], q[0], q[1], q[2]);
+      ++counters_.trianglePairsTested;
+      offer(t.pointOnA, t.pointOnB, t.distance, ta, false, orderB_[j], false);
+      if (done_) return;
+      limit = pruneBound();
+      bound = limit + roundoff_;
+    }
+  }
+}
+
+}  // namespace adsd::detail
