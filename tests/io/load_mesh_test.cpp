@@ -409,6 +409,52 @@ TEST(LoadMeshBadInput, PlyThatAssimpWouldHangOrAbortOn) {
   EXPECT_NE(word.find("word.ply:11: vertex 1: 'x' is not a number"), std::string::npos) << word;
 }
 
+// Fuzz findings (tests/fuzz/regressions/mesh_loader/ply_*): a vertical tab where the newline after
+// end_header belongs made assimp loop forever (no data after it) or read past its buffer (SEGV);
+// a face with no corners made its triangulation abort the process.
+TEST(LoadMeshBadInput, PlyHeaderControlCharactersAndFacesWithoutCorners) {
+  TempDir dir;
+  const std::string hang = loadError(dir.write("tab.ply", "ply\nformat binary_little_endian 1.0\nend_header\v"));
+  EXPECT_NE(hang.find("tab.ply:3: control character 0x0b in the PLY header"), std::string::npos) << hang;
+  const std::string segv =
+      loadError(dir.write("tab2.ply", std::string("ply\nformat binary_big_endian 1.0\nend_header\v\0\0\0\3", 48)));
+  EXPECT_NE(segv.find("tab2.ply:3: control character 0x0b"), std::string::npos) << segv;
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const std::string ascii = loadError(dir.write("empty_face.ply", header + "3 0 1 2\n0\n"));
+  EXPECT_NE(ascii.find("empty_face.ply:14: face 1: a face with no corners"), std::string::npos) << ascii;
+  // The same in binary: a face whose corner count is 0.
+  std::string binary = binaryPly(true);
+  binary.replace(binary.find("element face 1"), 14, "element face 2");
+  binary.push_back('\0');
+  const std::string zero = loadError(dir.write("empty_face_bin.ply", binary));
+  EXPECT_NE(zero.find("empty_face_bin.ply: face 1: a face with no corners"), std::string::npos) << zero;
+  // CR LF line ends stay accepted.
+  std::string crlf;
+  for (const char c : header + "3 0 1 2\n3 0 2 1\n") crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_EQ(loadMesh(dir.write("crlf.ply", crlf)).triangleCount(), 2u);
+}
+
+// Fuzz finding (tests/fuzz/regressions/mesh_loader/collada_quote_in_index_list_oom): one '"' in an
+// index list made assimp append zero indices until memory ran out (12.6 GB on a 1.3 KB file).
+TEST(LoadMeshBadInput, ColladaIndexListThatAssimpWouldReadForever) {
+  TempDir dir;
+  const std::string nodes = R"(<node id="n" name="n"><instance_geometry url="#tri"/></node>)";
+  const std::string good = colladaWithNodes(nodes);
+  const std::string triangles = "<p>0 1 2</p>";
+  for (const char* list : {"<p>0\"1 2</p>", "<p>0 1 &#50;</p>", "<p><![CDATA[0 1 2]]></p>", "<p>0 1 2"}) {
+    std::string dae = good;
+    dae.replace(dae.find(triangles), triangles.size(), list);
+    const std::string message = loadError(dir.write("bad_list.dae", dae));
+    EXPECT_NE(message.find("bad_list.dae:16: the index list <p> holds "), std::string::npos) << list << ": " << message;
+  }
+  // Signs, line breaks, a blank before '>' in the closing tag, <p/>, and <p> in a comment are fine.
+  std::string fine = good;
+  fine.replace(fine.find(triangles), triangles.size(), "<!-- <p>\"</p> --><p>\n+0 1\r\n 2 </p >");
+  EXPECT_EQ(loadMesh(dir.write("fine.dae", fine)).triangleCount(), 1u);
+}
+
 TEST(LoadMeshBadInput, TruncatedBinaryPly) {
   TempDir dir;
   const std::string whole = binaryPly(true);

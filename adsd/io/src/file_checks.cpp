@@ -124,6 +124,7 @@ void checkBeforeAssimp(const std::string& path) {
   if (ext == ".stl") requireCompleteBinaryStl(path, readFile(path, std::min<std::uintmax_t>(size, kStlSniffBytes)), size);
   if (ext == ".off") requireConsistentOff(path, readFile(path, size));
   if (ext == ".ply") requireConsistentPly(path, readFile(path, size));
+  if (ext == ".dae") requireIntegerIndexLists(path, readFile(path, size));
 }
 
 }  // namespace adsd::io::detail

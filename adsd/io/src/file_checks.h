@@ -33,4 +33,9 @@ void requireConsistentOff(const std::string& path, std::string_view text);
 /// (binary) for what assimp's reader would hang on, abort on, or misread (see ply_check.cpp).
 void requireConsistentPly(const std::string& path, std::string_view bytes);
 
+/// \brief COLLADA: every `<p>` index list holds integers and whitespace only, up to its `</p>`;
+/// throws InputError "PATH:LINE: ..." otherwise (assimp would read such a list forever, growing
+/// it until memory runs out; see collada_check.cpp).
+void requireIntegerIndexLists(const std::string& path, std::string_view text);
+
 }  // namespace adsd::io::detail

@@ -6,6 +6,12 @@
 // data is walked instance by instance (ASCII: one instance per line, as PLY writers emit it;
 // binary: record by record, list lengths included), and face indices are checked against the
 // vertex count. Anything off is an error naming the line (ASCII) or the element and instance.
+//
+// Two more, found by fuzzing (tests/fuzz/regressions/mesh_loader): a header line holding a control
+// character such as a vertical tab ("end_header\v"), which assimp's line reader does not take for
+// whitespace, so it never finds end_header and loops forever or reads past its buffer (SEGV); and
+// a face with no corners, which reaches assimp's triangulation step and fails its assertion
+// (abort). Both are refused here.
 
 #include <algorithm>
 #include <cstdint>
@@ -97,6 +103,7 @@ class PlyChecker {
     bool formatSeen = false;
     while (true) {
       if (!lines_.next(line)) throw InputError(path_ + ": the PLY header has no end_header line");
+      requireNoControlCharacter(line);
       const std::vector<std::string_view> t = splitWhitespace(line);
       if (t.empty() || t[0] == "comment" || t[0] == "obj_info") continue;
       if (t[0] == "end_header") break;
@@ -140,6 +147,24 @@ class PlyChecker {
     }
     if (!formatSeen) throw InputError(path_ + ": the PLY header has no format line");
     dataOffset_ = lines_.offset();
+  }
+
+  /// Header lines are words separated by spaces or tabs (the LineScanner has dropped a CR before
+  /// the line end); any other control character is one assimp's header reader chokes on.
+  void requireNoControlCharacter(std::string_view line) const {
+    for (const char c : line) {
+      const auto byte = static_cast<unsigned char>(c);
+      if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
+        const char digits[] = "0123456789abcdef";
+        throw InputError(at() + "control character 0x" + digits[byte >> 4] + digits[byte & 15] +
+                         " in the PLY header (words are separated by spaces, lines by a newline)");
+      }
+    }
+  }
+
+  /// A face must have corners: assimp's triangulation aborts the process on an empty one.
+  void requireCorners(long long count, const Element& e, const Property& p, long long instance) const {
+    if (count == 0 && isVertexIndexList(e, p)) throw InputError(where(e, instance) + ": a face with no corners");
   }
 
   void checkIndex(long long index, const Element& e, long long instance) const {
@@ -186,6 +211,7 @@ class PlyChecker {
           }
           const long long n = value(p.countType, "length of list " + p.name);
           if (n < 0) throw InputError(where(e, i) + ": list " + p.name + " has negative length " + std::to_string(n));
+          requireCorners(n, e, p, i);
           for (long long j = 0; j < n; ++j) {
             const long long item = value(p.valueType, "list " + p.name);
             if (isVertexIndexList(e, p)) checkIndex(item, e, i);
@@ -238,6 +264,7 @@ class PlyChecker {
           const long long n = readInteger(p.countType);
           pos_ += static_cast<std::size_t>(p.countType.bytes);
           if (n < 0) throw InputError(where(e, i) + ": list " + p.name + " has negative length " + std::to_string(n));
+          requireCorners(n, e, p, i);
           const std::size_t itemBytes = static_cast<std::size_t>(p.valueType.bytes);
           if (static_cast<std::uint64_t>(n) > (bytes_.size() - pos_) / itemBytes) truncated(e, i);
           if (isVertexIndexList(e, p) && p.valueType.isInteger) {

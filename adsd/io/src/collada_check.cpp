@@ -1,0 +1,83 @@
+// The index-list check for COLLADA files, run before assimp reads them.
+//
+// Assimp 5.2's COLLADA parser reads a primitive's index list (<p>) number by number until the end
+// of its text, and a character that is neither a digit, a sign nor whitespace stops its number
+// reader without moving past it: the list then grows by one zero index per step until memory runs
+// out. Found by fuzzing (tests/fuzz/regressions/mesh_loader/collada_quote_in_index_list_oom): one
+// stray '"' in `<p>0"2 1 ...</p>` made `adsd distance` allocate 12.6 GB in 42 s before
+// std::bad_alloc. So every <p> here must hold integers and whitespace only, up to its </p>.
+//
+// The check reads the raw text, not the XML tree: an index list written with character references
+// (&#48;), with CDATA or with a comment inside is refused too, though an XML parser would decode
+// it; no exporter writes indices that way, and refusing is safe where guessing is not.
+
+#include <string>
+#include <string_view>
+
+#include "adsd/error.h"
+#include "file_checks.h"
+#include "text_scan.h"
+
+namespace adsd::io::detail {
+
+namespace {
+
+/// What assimp's index reader steps over: digits, a sign, and the whitespace it skips between
+/// numbers (space, tab, CR, LF).
+bool isIndexListCharacter(char c) {
+  return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
+/// True when \p text at \p at starts the start tag of an element named exactly "p".
+bool startsParagraphTag(std::string_view text, std::size_t at) {
+  if (text.compare(at, 2, "<p") != 0 || at + 2 >= text.size()) return false;
+  const char next = text[at + 2];
+  return next == '>' || next == '/' || next == ' ' || next == '\t' || next == '\r' || next == '\n';
+}
+
+/// The offset after `</p>` (blanks allowed before the '>') when \p text at \p at starts one, else npos.
+std::size_t closingParagraphTagEnd(std::string_view text, std::size_t at) {
+  if (text.compare(at, 3, "</p") != 0) return std::string_view::npos;
+  std::size_t i = at + 3;
+  while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n')) ++i;
+  return i < text.size() && text[i] == '>' ? i + 1 : std::string_view::npos;
+}
+
+int lineOf(std::string_view text, std::size_t at) {
+  int line = 1;
+  for (std::size_t i = 0; i < at && i < text.size(); ++i) line += text[i] == '\n' ? 1 : 0;
+  return line;
+}
+
+}  // namespace
+
+void requireIntegerIndexLists(const std::string& path, std::string_view text) {
+  std::size_t at = 0;
+  while ((at = text.find('<', at)) != std::string_view::npos) {
+    if (text.compare(at, 4, "<!--") == 0) {  // a comment may mention <p> freely
+      const std::size_t end = text.find("-->", at + 4);
+      if (end == std::string_view::npos) return;  // unterminated: the XML parser reports it
+      at = end + 3;
+      continue;
+    }
+    if (!startsParagraphTag(text, at)) {
+      ++at;
+      continue;
+    }
+    const std::size_t tagEnd = text.find('>', at);
+    if (tagEnd == std::string_view::npos) return;  // unterminated tag: the XML parser reports it
+    at = tagEnd + 1;
+    if (text[tagEnd - 1] == '/') continue;  // <p/>: an empty list
+    std::size_t i = at;
+    while (i < text.size() && isIndexListCharacter(text[i])) ++i;
+    if (const std::size_t end = closingParagraphTagEnd(text, i); end != std::string_view::npos) {
+      at = end;
+      continue;
+    }
+    const std::string what = i < text.size() ? quoteToken(text.substr(i, 1)) : std::string("the end of the file");
+    throw InputError(path + ":" + std::to_string(lineOf(text, i)) + ": the index list <p> holds " + what +
+                     "; expected integers separated by whitespace up to </p>");
+  }
+}
+
+}  // namespace adsd::io::detail
