@@ -1,9 +1,12 @@
 // `adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]
-//            [--checker adsd|fcl] [--motion discrete|certified] [--path OUT.path]`
+//            [--checker adsd|fcl] [--motion discrete|certified] [--seed S] [--no-simplify]
+//            [--path OUT.path]`
 //
 // Solves a problem file (the default problem without one), simplifies the path, prints a summary
 // and writes the path in OMPL.app's .path format. Exit status: 0 solved, 1 not solved within the
 // time, 2 bad input (one line naming the file, line and key).
+#include <cerrno>
+#include <cstdint>
 #include <exception>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +16,7 @@
 #include <vector>
 
 #include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
 #include "adsd/error.h"
@@ -37,11 +41,18 @@ struct PlanArguments {
   CheckerKind checker = CheckerKind::adsd;
   MotionKind motion = MotionKind::discrete;
   std::optional<std::string> pathFile;
+  std::optional<std::uint32_t> seed;
+  bool simplify = true;
 };
 
 const char* kUsage =
     "usage: adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]\n"
-    "                 [--checker adsd|fcl] [--motion discrete|certified] [--path OUT.path]\n";
+    "                 [--checker adsd|fcl] [--motion discrete|certified] [--seed S] [--no-simplify]\n"
+    "                 [--path OUT.path]\n"
+    "  --seed S   OMPL's random seed (1 to 4294967295; default: OMPL's own), so that runs with\n"
+    "             either checker can be repeated and compared on the same random draws\n"
+    "  --no-simplify   report and write the planner's path as found (comparisons of planning time\n"
+    "                  need not wait for the simplifier, which may use the whole time limit again)\n";
 
 PlanArguments parseArguments(const std::vector<std::string>& args) {
   PlanArguments a;
@@ -88,6 +99,19 @@ PlanArguments parseArguments(const std::vector<std::string>& args) {
       } else {
         throw InputError("--motion: expected discrete or certified, got '" + v + "'");
       }
+    } else if (arg == "--seed") {
+      const std::string& v = value();
+      char* end = nullptr;
+      errno = 0;
+      const unsigned long long seed = std::strtoull(v.c_str(), &end, 10);
+      // OMPL's generator takes no seed 0; the digits check refuses the sign strtoull accepts.
+      if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || end != v.c_str() + v.size() ||
+          errno == ERANGE || seed < 1 || seed > 4294967295ULL) {
+        throw InputError("--seed: expected a whole number from 1 to 4294967295, got '" + v + "'");
+      }
+      a.seed = static_cast<std::uint32_t>(seed);
+    } else if (arg == "--no-simplify") {
+      a.simplify = false;
     } else if (arg == "--path") {
       a.pathFile = value();
     } else if (!arg.empty() && arg[0] == '-') {
@@ -154,6 +178,8 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
 
 int plan(const std::vector<std::string>& args) {
   const PlanArguments a = parseArguments(args);
+  // Before anything draws a random number: OMPL seeds every new generator from one seeded one.
+  if (a.seed) ompl::RNG::setSeed(*a.seed);
   const ProblemFile file = readProblemFile(a.problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd plan: warning: " << w << '\n';
 
@@ -174,27 +200,31 @@ int plan(const std::vector<std::string>& args) {
   const ompl::base::PlannerStatus status = ss.solve(seconds);
   const double planningSeconds = ompl::time::seconds(ompl::time::now() - started);
   const bool solved = status == ompl::base::PlannerStatus::EXACT_SOLUTION;
+  // The planner's own queries, before the simplifier adds its own.
+  const QueryCounts counts = problem.checker()->counts();
+  const MotionCounts motionCounts =
+      problem.certifiedValidator() ? problem.certifiedValidator()->counts() : MotionCounts{};
 
   double simplifySeconds = 0.0;
-  if (solved) {
+  if (solved && a.simplify) {
     const ompl::time::point s = ompl::time::now();
     ss.simplifySolution(seconds);
     simplifySeconds = ompl::time::seconds(ompl::time::now() - s);
   }
-  const QueryCounts counts = problem.checker()->counts();
 
   std::printf("problem     %s (%s, %s)\n", file.name.c_str(), file.space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)",
               a.problem.c_str());
   std::printf("setup       planner %s, checker %s, motion %s, objective %s, time limit %g s\n", plannerName.c_str(),
               name(a.checker), name(a.motion), name(problem.objective()), seconds);
+  std::printf("seed        %lu%s\n", static_cast<unsigned long>(ompl::RNG::getSeed()), a.seed ? " (--seed)" : "");
   std::printf("solved      %s (%s)\n", solved ? "yes" : "no", status.asString().c_str());
   std::printf("time        %.3f s planning, %.3f s simplifying\n", planningSeconds, simplifySeconds);
-  std::printf("queries     %llu validity checks (mean %.2f us), %llu clearance queries (mean %.2f us)\n",
+  std::printf("queries     planning: %llu validity checks (mean %.2f us), %llu clearance queries (mean %.2f us)\n",
               static_cast<unsigned long long>(counts.validityChecks), 1e6 * counts.meanValiditySeconds(),
               static_cast<unsigned long long>(counts.clearanceQueries), 1e6 * counts.meanClearanceSeconds());
   if (problem.certifiedValidator()) {
-    const MotionCounts m = problem.certifiedValidator()->counts();
-    std::printf("motions     %llu certified checks, %llu rejected, %llu clearance steps\n",
+    const MotionCounts& m = motionCounts;
+    std::printf("motions     planning: %llu certified checks, %llu rejected, %llu clearance steps\n",
                 static_cast<unsigned long long>(m.motions), static_cast<unsigned long long>(m.rejected),
                 static_cast<unsigned long long>(m.clearanceSteps));
   }

@@ -42,8 +42,9 @@ std::shared_ptr<const RigidBodyScene> loadScene(const ProblemFile& file) {
   auto scene = std::make_shared<RigidBodyScene>();
   scene->space = file.space;
   scene->robot.push_back(recentreRobot(loadProblemMesh(file.robotPath, file.robotLocation), file.space));
-  // One world file, many parts: the broad phase then skips the parts far from the robot.
-  scene->environment = splitIntoParts(loadProblemMesh(file.worldPath, file.worldLocation));
+  // One world file, many parts of about the robot's size: the broad phase then skips the parts far
+  // from the robot, and none of them surrounds it.
+  scene->environment = splitForRobot(loadProblemMesh(file.worldPath, file.worldLocation), scene->robot);
   return scene;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 namespace adsd::planner {
 
@@ -30,7 +31,68 @@ double sceneScale(const RigidBodyScene& scene) {
   return box.diagonal().norm();
 }
 
-std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts) {
+namespace {
+
+using TriangleList = std::vector<std::size_t>;
+
+Vec3 centroid(const Mesh& mesh, std::size_t t) {
+  return (mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)) / 3.0;
+}
+
+Eigen::AlignedBox3d boxOf(const Mesh& mesh, const TriangleList& triangles) {
+  Eigen::AlignedBox3d box;
+  for (std::size_t t : triangles) {
+    for (int k = 0; k < 3; ++k) box.extend(mesh.corner(t, k));
+  }
+  return box;
+}
+
+/// Splits \p items (each with a point) at the median along the longest axis of their points' box,
+/// the first part holding \p firstShare of them (0 < firstShare < 1).
+template <typename Item, typename PointOf>
+std::pair<std::vector<Item>, std::vector<Item>> medianSplit(std::vector<Item> items, double firstShare,
+                                                            const PointOf& pointOf) {
+  Eigen::AlignedBox3d box;
+  for (const Item& i : items) box.extend(pointOf(i));
+  Eigen::Index axis = 0;
+  box.sizes().maxCoeff(&axis);
+  const auto middle = items.begin() + static_cast<std::ptrdiff_t>(firstShare * static_cast<double>(items.size()));
+  std::nth_element(items.begin(), middle, items.end(),
+                   [&](const Item& a, const Item& b) { return pointOf(a)[axis] < pointOf(b)[axis]; });
+  return {std::vector<Item>(items.begin(), middle), std::vector<Item>(middle, items.end())};
+}
+
+/// Cuts \p triangles into pieces whose boxes have a diagonal of at most \p maxDiagonal (or that
+/// hold too few triangles to cut further), appending them to \p pieces.
+void cutIntoPieces(const Mesh& mesh, TriangleList triangles, double maxDiagonal, std::vector<TriangleList>& pieces) {
+  if (triangles.size() <= kMinPieceTriangles || !(boxOf(mesh, triangles).diagonal().norm() > maxDiagonal)) {
+    pieces.push_back(std::move(triangles));
+    return;
+  }
+  auto [first, second] =
+      medianSplit(std::move(triangles), 0.5, [&mesh](std::size_t t) { return centroid(mesh, t); });
+  cutIntoPieces(mesh, std::move(first), maxDiagonal, pieces);
+  cutIntoPieces(mesh, std::move(second), maxDiagonal, pieces);
+}
+
+/// Groups \p pieces (indices into \p centres) into exactly min(groups, pieces) spatially compact
+/// groups, by median splits of their centres.
+void groupPieces(std::vector<std::size_t> pieces, std::size_t groups, const std::vector<Vec3>& centres,
+                 std::vector<std::vector<std::size_t>>& out) {
+  if (groups <= 1 || pieces.size() <= 1) {
+    out.push_back(std::move(pieces));
+    return;
+  }
+  const std::size_t firstGroups = groups / 2;
+  auto [first, second] = medianSplit(std::move(pieces), static_cast<double>(firstGroups) / static_cast<double>(groups),
+                                     [&centres](std::size_t p) { return centres[p]; });
+  groupPieces(std::move(first), firstGroups, centres, out);
+  groupPieces(std::move(second), groups - firstGroups, centres, out);
+}
+
+}  // namespace
+
+std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts, double maxPieceDiagonal) {
   // Union-find over vertices: the corners of a triangle belong together.
   std::vector<std::uint32_t> parent(mesh.vertices().size());
   std::iota(parent.begin(), parent.end(), 0u);
@@ -41,57 +103,67 @@ std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts) {
   for (const TriangleIndices& t : mesh.triangles()) {
     for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
   }
-  // Components in order of first appearance, each with its triangles and box.
+  // Components in order of first appearance.
   std::vector<std::int64_t> componentOfRoot(parent.size(), -1);
-  std::vector<std::vector<std::size_t>> components;
-  std::vector<Eigen::AlignedBox3d> boxes;
+  std::vector<TriangleList> components;
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     const std::uint32_t r = root(mesh.triangles()[t][0]);
     if (componentOfRoot[r] < 0) {
       componentOfRoot[r] = static_cast<std::int64_t>(components.size());
       components.emplace_back();
-      boxes.emplace_back();
     }
     components[componentOfRoot[r]].push_back(t);
-    for (int k = 0; k < 3; ++k) boxes[componentOfRoot[r]].extend(mesh.corner(t, k));
   }
-  if (components.size() <= 1) return {mesh};
+  // Large components cut into pieces: a room, a maze or a box the robot sits in has a convex hull
+  // that holds the robot, so no hull-based bound can separate them; its pieces' hulls can.
+  std::vector<TriangleList> pieces;
+  for (TriangleList& c : components) cutIntoPieces(mesh, std::move(c), maxPieceDiagonal, pieces);
+  if (pieces.size() <= 1) return {mesh};
 
-  // Group neighbours when there are too many: sort by box centre along the longest axis, then cut
-  // the sequence into maxParts runs of about equal size.
-  std::vector<std::size_t> order(components.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::size_t groups = components.size();
-  if (groups > maxParts && maxParts > 0) {
-    Eigen::Index axis = 0;
-    mesh.bounds().sizes().maxCoeff(&axis);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return boxes[a].center()[axis] < boxes[b].center()[axis]; });
-    groups = maxParts;
+  // Too many pieces: spatially compact groups of them (median splits of the pieces' centres).
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<std::size_t> all(pieces.size());
+  std::iota(all.begin(), all.end(), 0);
+  if (maxParts > 0 && pieces.size() > maxParts) {
+    std::vector<Vec3> centres;
+    for (const TriangleList& p : pieces) centres.push_back(boxOf(mesh, p).center());
+    groupPieces(std::move(all), maxParts, centres, groups);
+  } else {
+    for (std::size_t p : all) groups.push_back({p});
   }
+
   std::vector<Mesh> parts;
-  for (std::size_t g = 0; g < groups; ++g) {
-    const std::size_t begin = g * order.size() / groups, end = (g + 1) * order.size() / groups;
+  std::vector<std::int64_t> remap(mesh.vertices().size(), -1);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
     std::vector<Vec3> vertices;
     std::vector<TriangleIndices> triangles;
-    std::vector<std::int64_t> remap(mesh.vertices().size(), -1);
-    for (std::size_t i = begin; i < end; ++i) {
-      for (std::size_t t : components[order[i]]) {
+    std::vector<std::uint32_t> used;
+    for (std::size_t p : groups[g]) {
+      for (std::size_t t : pieces[p]) {
         TriangleIndices out{};
         for (int k = 0; k < 3; ++k) {
           const std::uint32_t v = mesh.triangles()[t][k];
           if (remap[v] < 0) {
             remap[v] = static_cast<std::int64_t>(vertices.size());
             vertices.push_back(mesh.vertices()[v]);
+            used.push_back(v);
           }
           out[k] = static_cast<std::uint32_t>(remap[v]);
         }
         triangles.push_back(out);
       }
     }
+    for (std::uint32_t v : used) remap[v] = -1;  // a vertex shared by two pieces is copied into each
     parts.emplace_back(std::move(vertices), std::move(triangles), mesh.name() + " part " + std::to_string(g));
   }
   return parts;
+}
+
+std::vector<Mesh> splitForRobot(const Mesh& environment, const std::vector<Mesh>& robot) {
+  RigidBodyScene robotOnly;
+  robotOnly.robot = robot;
+  const double diameter = 2.0 * robotRadius(robotOnly);
+  return splitIntoParts(environment, kMaxEnvironmentParts, kPieceDiagonalPerRobotDiameter * diameter);
 }
 
 Mesh recentreRobot(const Mesh& robot, RigidBodySpace space) {

@@ -58,6 +58,8 @@ void compareWithOracle(const SceneFixture& f, int defaultStates, std::uint64_t s
   PoseSampler sampler(f, seed);
   ompl::base::ScopedState<> state(f.si);
   int valid = 0, colliding = 0, ambiguous = 0, fclDisagreements = 0;
+  int oursValidityDisagreements = 0, fclValidityDisagreements = 0;
+  double oursMaxError = 0.0, fclMaxError = 0.0;  // |clearance - oracle|, the scene's length unit
   for (int i = 0; i < states; ++i) {
     const Pose pose = sampler.next();
     poseToState(pose, f.scene->space, state.get());
@@ -71,15 +73,20 @@ void compareWithOracle(const SceneFixture& f, int defaultStates, std::uint64_t s
     const bool validWithDistance = ours->isValid(state.get(), dist);
     const double clearance = ours->clearance(state.get());
     EXPECT_NEAR(clearance, truth.distance, tolerance) << f.name << " state " << i;
+    oursMaxError = std::max(oursMaxError, std::fabs(clearance - truth.distance));
     EXPECT_EQ(dist, clearance) << f.name << " state " << i << ": isValid(state, dist) gives clearance()";
     const bool inBounds = f.si->satisfiesBounds(state.get());
     if (truth.distance > tolerance) {
       ++valid;
-      EXPECT_EQ(ours->isValid(state.get()), inBounds) << f.name << " state " << i << " oracle " << truth.distance;
+      const bool oursValid = ours->isValid(state.get());
+      oursValidityDisagreements += oursValid != inBounds || validWithDistance != inBounds;
+      EXPECT_EQ(oursValid, inBounds) << f.name << " state " << i << " oracle " << truth.distance;
       EXPECT_EQ(validWithDistance, inBounds) << f.name << " state " << i;
     } else if (truth.intersecting) {
       ++colliding;
-      EXPECT_FALSE(ours->isValid(state.get())) << f.name << " state " << i;
+      const bool oursValid = ours->isValid(state.get());
+      oursValidityDisagreements += oursValid || validWithDistance;
+      EXPECT_FALSE(oursValid) << f.name << " state " << i;
       EXPECT_FALSE(validWithDistance) << f.name << " state " << i;
     } else {
       ++ambiguous;  // touching within rounding: either answer is right
@@ -88,8 +95,10 @@ void compareWithOracle(const SceneFixture& f, int defaultStates, std::uint64_t s
     // FCL, side by side: recorded, and held to a looser bound (its GJK stops at its own tolerance).
     const double fclClearance = fcl->clearance(state.get());
     const bool fclValid = fcl->isValid(state.get());
+    fclMaxError = std::max(fclMaxError, std::fabs(fclClearance - truth.distance));
     const bool fclWrong = std::fabs(fclClearance - truth.distance) > 1e-6 * ours->scale() ||
                           (truth.distance > tolerance && fclValid != inBounds) || (truth.intersecting && fclValid);
+    fclValidityDisagreements += (truth.distance > tolerance && fclValid != inBounds) || (truth.intersecting && fclValid);
     if (fclWrong) {
       ++fclDisagreements;
       std::printf("[fcl vs oracle] %s state %d: fcl clearance %.17g valid %d, oracle %.17g intersecting %d\n",
@@ -98,6 +107,10 @@ void compareWithOracle(const SceneFixture& f, int defaultStates, std::uint64_t s
   }
   std::printf("[%s] %d states: %d valid, %d colliding, %d touching within rounding; FCL disagreed on %d\n",
               f.name.c_str(), states, valid, colliding, ambiguous, fclDisagreements);
+  std::printf("[%s] max |clearance - oracle| / scene diagonal: adsd %.3g, FCL %.3g; validity disagreements: "
+              "adsd %d, FCL %d\n",
+              f.name.c_str(), oursMaxError / ours->scale(), fclMaxError / ours->scale(), oursValidityDisagreements,
+              fclValidityDisagreements);
   // The sample must exercise both answers (STYLE habit: check the random mix).
   EXPECT_GT(valid, states / 10) << f.name;
   EXPECT_GT(colliding, states / 10) << f.name;
@@ -163,6 +176,30 @@ TEST(SplitIntoParts, KeepsEveryTriangleOnce) {
     EXPECT_EQ(triangles, office.triangleCount());
     EXPECT_TRUE(box.isApprox(office.bounds()));
   }
+}
+
+TEST(SplitIntoParts, CutsASurroundingRoomIntoPiecesOfTheGivenSize) {
+  // A room's inner shell holds whatever is inside it in its convex hull: cut into pieces no larger
+  // than 1.5, every triangle kept once, each piece within the size unless too few triangles to cut.
+  const Mesh walls = shapes::room(Vec3(2.5, 1.5, 1.5), 0.1, 4);
+  const std::vector<Mesh> pieces = splitIntoParts(walls, 1000, 1.5);
+  std::size_t triangles = 0;
+  Eigen::AlignedBox3d box;
+  for (const Mesh& p : pieces) {
+    triangles += p.triangleCount();
+    box.extend(p.bounds());
+    EXPECT_TRUE(p.bounds().diagonal().norm() <= 1.5 || p.triangleCount() <= kMinPieceTriangles)
+        << p.name() << ": " << p.triangleCount() << " triangles, diagonal " << p.bounds().diagonal().norm();
+  }
+  EXPECT_EQ(triangles, walls.triangleCount());
+  EXPECT_TRUE(box.isApprox(walls.bounds()));
+  EXPECT_GT(pieces.size(), 2u * 6u);  // more than the two shells' faces
+  // Grouped again into at most 16 parts, still every triangle once.
+  const std::vector<Mesh> grouped = splitIntoParts(walls, 16, 1.5);
+  EXPECT_EQ(grouped.size(), 16u);
+  triangles = 0;
+  for (const Mesh& p : grouped) triangles += p.triangleCount();
+  EXPECT_EQ(triangles, walls.triangleCount());
 }
 
 TEST(CheckerSettings, ClearanceTypeIsHonest) {

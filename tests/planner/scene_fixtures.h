@@ -37,7 +37,7 @@ inline SceneFixture makeFixture(const shapes::ProblemScene& generated, RigidBody
   f.scene = std::make_shared<RigidBodyScene>();
   f.scene->robot = generated.robot;
   // Split as PlanningProblem splits a loaded world, so the broad phase is exercised as in use.
-  f.scene->environment = splitIntoParts(generated.environment);
+  f.scene->environment = splitForRobot(generated.environment, generated.robot);
   f.oracleEnvironment = {generated.environment};
   f.scene->space = space;
   f.volume = volume;

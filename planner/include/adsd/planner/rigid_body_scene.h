@@ -4,6 +4,7 @@
 /// whether the robot moves in SE(2) or SE(3).
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -39,16 +40,33 @@ Eigen::AlignedBox3d environmentBounds(const RigidBodyScene& scene);
 /// (environment box widened by the robot radius): the scene's length scale for tolerances.
 double sceneScale(const RigidBodyScene& scene);
 
-/// Most parts splitIntoParts() makes (count): the broad phase tests every robot part against every
-/// environment part on each query (a ball–box distance, a few ns each), so 64 parts cost well under
-/// a microsecond while letting it skip most of a large scene.
-inline constexpr std::size_t kMaxEnvironmentParts = 64;
+/// Most parts splitIntoParts() makes (count): the broad phase bounds every robot part against
+/// every environment part on each query (a ball–box and a box–box distance, a few ns each), so a
+/// few hundred parts cost about a microsecond while letting it skip most of a large scene.
+inline constexpr std::size_t kMaxEnvironmentParts = 256;
 
-/// \brief Splits \p mesh into its connected components (triangles sharing a vertex index), for
-/// the checkers' broad phase; when there are more than \p maxParts, neighbouring components
-/// (ordered along the mesh's longest axis) are grouped into \p maxParts meshes. Every triangle
-/// ends up in exactly one part, so the distance to the parts' union is the distance to the mesh.
-std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts = kMaxEnvironmentParts);
+/// Pieces of at most this many triangles are not cut further (count): cutting cannot make a piece
+/// smaller than its largest triangle, and a handful of triangles is one cheap query anyway.
+inline constexpr std::size_t kMinPieceTriangles = 8;
+
+/// Environment pieces are cut down to a box diagonal of at most this multiple of the robot's
+/// diameter (dimensionless). An environment that surrounds the robot (a room, a maze, a closed
+/// box) has a convex hull that holds it, so the distance query's hull bounds (paper, Section 3)
+/// cannot separate them and it must split both meshes on every query; pieces of about the robot's
+/// size are separated by their boxes or hulls at once, and the broad phase skips the far ones.
+inline constexpr double kPieceDiagonalPerRobotDiameter = 1.0;
+
+/// \brief Splits \p mesh into parts for the checkers' broad phase: its connected components
+/// (triangles sharing a vertex index), each cut (median splits of its triangles' centroids) into
+/// pieces whose boxes have a diagonal of at most \p maxPieceDiagonal; when there are more than
+/// \p maxParts pieces, spatially neighbouring pieces are grouped into \p maxParts parts. Every
+/// triangle ends up in exactly one part, so the distance to the parts' union is the distance to
+/// the mesh.
+std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts = kMaxEnvironmentParts,
+                                 double maxPieceDiagonal = std::numeric_limits<double>::infinity());
+
+/// \brief splitIntoParts() with pieces sized to the scene's robot (kPieceDiagonalPerRobotDiameter).
+std::vector<Mesh> splitForRobot(const Mesh& environment, const std::vector<Mesh>& robot);
 
 /// \brief Re-centres a robot mesh the OMPL.app way: subtracts the mean of its vertices, with the
 /// z component of that mean kept at zero for SE(2) problems (shared/OMPLAPP-CFG.md).
