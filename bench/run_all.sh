@@ -1,0 +1,113 @@
+#!/usr/bin/env bash
+# Every benchmark behind the README's figures, in one command, and the README's result blocks
+# pasted from their output (issue 5: "one command produces the CSV, the tables and the plots").
+#
+#   bench/run_all.sh [BUILD_DIR] [--no-readme] [--no-planning]
+#
+# BUILD_DIR (default: build) must hold a Release build of the targets
+#   bench_distance_vs_fcl bench_scenes adsd adsd_problems
+# and the real meshes must be cached (problems/data/fetch_meshes.sh). Writes bench/results/:
+#   distance_vs_fcl.txt   bench_distance_vs_fcl (issue 2: cow x cow from scratch against FCL)
+#   scenes.csv, scenes.md, table1.md, time_vs_error.png, time_vs_triangles.png
+#                         bench_scenes: every scene, every method, against the oracle
+#   scenes.txt            what bench_scenes printed (per scene: checksums beside the oracle's)
+#   ratios.md             bench/ratio_summary.py: issue 6's distance ratios from scenes.csv
+#   planning_solve_times.md, planning_solve_times_hard.md
+#                         bench/planning/solve_time_ratios.py: issue 6's end-to-end row (RRTConnect
+#                         and PRM, median solve time with our checker and FCL's, interleaved)
+#   run_all.log           what each step printed on stderr, and its time
+# then bench/update_readme.py pastes them into README.md's blocks `speed` and `planning`.
+# Each step writes into a temporary directory that replaces bench/results only when every step
+# succeeded, so a failed run leaves the last good results and the README as they were.
+# Exit status: the first failing step's (bench_scenes: 3 when an answer disagrees with the oracle).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build=build readme=1 planning=1
+for arg in "$@"; do
+  case "$arg" in
+    --no-readme) readme=0 ;;
+    --no-planning) planning=0 ;;
+    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "run_all.sh: unknown option '$arg'" >&2; exit 2 ;;
+    *) build=$arg ;;
+  esac
+done
+for program in bench/bench_distance_vs_fcl bench/bench_scenes planner/app/adsd; do
+  [[ -x "$build/$program" ]] || { echo "run_all.sh: no $build/$program (build the targets first, see --help)" >&2; exit 2; }
+done
+[[ -d "$build/problem_files" ]] || { echo "run_all.sh: no $build/problem_files (build adsd_problems)" >&2; exit 2; }
+
+# Inside the repository, so that the commands the tables quote are the ones a reader types.
+staging=bench/results.new
+rm -rf "$staging"
+mkdir -p "$staging"
+log=$staging/run_all.log
+started=$SECONDS
+step() {  # step NAME COMMAND...: runs COMMAND, its stderr into the log, and says how long it took
+  local name=$1 t=$SECONDS
+  shift
+  echo "run_all.sh: $name ..." >&2
+  echo "=== $name: $*" >>"$log"
+  "$@" 2>>"$log"
+  echo "=== $name: $((SECONDS - t)) s" >>"$log"
+  echo "run_all.sh: $name done in $((SECONDS - t)) s" >&2
+}
+
+# Which code the figures belong to: the source tree the build was configured from, its commit, and
+# whether its library, planner, problems or benchmark sources differ from that commit (a clean
+# export made by `git archive` holds its commit in the file .adsd-commit instead).
+source=$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$build/CMakeCache.txt")
+if [[ -f "$source/.adsd-commit" ]]; then
+  code="exported commit $(cat "$source/.adsd-commit")"
+elif git -C "$source" rev-parse --short HEAD >/dev/null 2>&1; then
+  code="commit $(git -C "$source" rev-parse --short HEAD)"
+  git -C "$source" diff --quiet HEAD -- adsd bench planner problems || code+=" with uncommitted changes in adsd/ bench/ planner/ problems/"
+else
+  code="unknown commit"
+fi
+echo "=== $(date -u '+%Y-%m-%d %H:%M UTC'); binaries of $build, built from $source ($code); $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)" >"$log"
+step distance_vs_fcl sh -c "'$build/bench/bench_distance_vs_fcl' > '$staging/distance_vs_fcl.txt'"
+step scenes sh -c "'$build/bench/bench_scenes' --out '$staging' > '$staging/scenes.txt'"
+# The tables quote the command that made them; they are read from bench/results.
+sed -i "s#--out $staging#--out bench/results#" "$staging/scenes.md" "$staging/table1.md"
+step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
+if [[ $planning -eq 1 ]]; then
+  # The problems that our checker and FCL's both solve within seconds, ten runs each; the bug trap
+  # and the twisted passage need seconds per run, five runs each. The cow doorway and the alpha
+  # puzzle are left out: RRTConnect and PRM rarely solve them within a minute with either checker
+  # (problems/README.md), so their medians would be the time limit, not a solve time.
+  planning_work=$staging/planning
+  step planning /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
+    --problems "$build/problem_files" --out "$planning_work/fast" --runs 10 --time 5 --only office,thin_wall,maze
+  step planning_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
+    --problems "$build/problem_files" --out "$planning_work/hard" --runs 5 --time 10 --only bug_trap,twisted_passage
+  cp "$planning_work/fast/solve_times.md" "$staging/planning_solve_times.md"
+  cp "$planning_work/hard/solve_times.md" "$staging/planning_solve_times_hard.md"
+  rm -rf "$planning_work"
+elif [[ -d bench/results ]]; then
+  cp bench/results/planning_solve_times*.md "$staging/" 2>/dev/null || true
+fi
+# The stress table is the numerics suite's (tests/stress), pasted by its owner; keep it.
+[[ -f bench/results/stress.txt ]] && cp bench/results/stress.txt "$staging/"
+echo "=== total: $((SECONDS - started)) s" >>"$log"
+
+rm -rf bench/results.old
+[[ -d bench/results ]] && mv bench/results bench/results.old
+mv "$staging" bench/results
+rm -rf bench/results.old
+
+if [[ $readme -eq 1 ]]; then
+  /usr/bin/python3 bench/update_readme.py README.md speed \
+    "$build/bench/bench_distance_vs_fcl" bench/results/distance_vs_fcl.txt \
+    "$build/bench/bench_scenes --out bench/results (the paper's Table 1)" bench/results/table1.md \
+    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (issue 6's ratios, medians)" bench/results/ratios.md
+  if [[ -f bench/results/planning_solve_times.md ]]; then
+    /usr/bin/python3 bench/update_readme.py README.md planning \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 10 --time 5 --only office,thin_wall,maze" \
+      bench/results/planning_solve_times.md \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 5 --time 10 --only bug_trap,twisted_passage" \
+      bench/results/planning_solve_times_hard.md
+  fi
+fi
+echo "run_all.sh: bench/results written in $((SECONDS - started)) s$([[ $readme -eq 1 ]] && echo ', README.md blocks speed and planning pasted')" >&2
