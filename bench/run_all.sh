@@ -2,7 +2,10 @@
 # Every benchmark behind the README's figures, in one command, and the README's result blocks
 # pasted from their output (issue 5: "one command produces the CSV, the tables and the plots").
 #
-#   bench/run_all.sh [BUILD_DIR] [--no-readme] [--no-planning]
+#   bench/run_all.sh [BUILD_DIR] [--no-readme] [--no-planning] [--paste-only] [--readme FILE]
+#
+# --paste-only: run nothing, paste bench/results into the README's blocks again; --readme FILE:
+# paste into FILE instead of README.md (same layout).
 #
 # BUILD_DIR (default: build) must hold a Release build of the targets
 #   bench_distance_vs_fcl bench_scenes adsd adsd_problems
@@ -23,16 +26,38 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-build=build readme=1 planning=1
-for arg in "$@"; do
-  case "$arg" in
+build=build readme=1 planning=1 paste_only=0 readme_file=README.md
+while [[ $# -gt 0 ]]; do
+  case "$1" in
     --no-readme) readme=0 ;;
     --no-planning) planning=0 ;;
-    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    -*) echo "run_all.sh: unknown option '$arg'" >&2; exit 2 ;;
-    *) build=$arg ;;
+    --paste-only) paste_only=1 ;;
+    --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
+    *) build=$1 ;;
   esac
+  shift
 done
+
+# Pastes bench/results into the README's blocks (the commands shown are those that made them).
+paste_readme() {
+  /usr/bin/python3 bench/update_readme.py "$readme_file" speed \
+    "$build/bench/bench_distance_vs_fcl" bench/results/distance_vs_fcl.txt \
+    "$build/bench/bench_scenes --out bench/results (the paper's Table 1)" bench/results/table1.md \
+    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (issue 6's ratios, medians)" bench/results/ratios.md
+  if [[ -f bench/results/planning_solve_times.md ]]; then
+    /usr/bin/python3 bench/update_readme.py "$readme_file" planning \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 10 --time 5 --only office,thin_wall,maze" \
+      bench/results/planning_solve_times.md \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 5 --time 10 --only bug_trap,twisted_passage" \
+      bench/results/planning_solve_times_hard.md
+  fi
+}
+if [[ $paste_only -eq 1 ]]; then
+  paste_readme
+  exit 0
+fi
 for program in bench/bench_distance_vs_fcl bench/bench_scenes planner/app/adsd; do
   [[ -x "$build/$program" ]] || { echo "run_all.sh: no $build/$program (build the targets first, see --help)" >&2; exit 2; }
 done
@@ -97,17 +122,5 @@ rm -rf bench/results.old
 mv "$staging" bench/results
 rm -rf bench/results.old
 
-if [[ $readme -eq 1 ]]; then
-  /usr/bin/python3 bench/update_readme.py README.md speed \
-    "$build/bench/bench_distance_vs_fcl" bench/results/distance_vs_fcl.txt \
-    "$build/bench/bench_scenes --out bench/results (the paper's Table 1)" bench/results/table1.md \
-    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (issue 6's ratios, medians)" bench/results/ratios.md
-  if [[ -f bench/results/planning_solve_times.md ]]; then
-    /usr/bin/python3 bench/update_readme.py README.md planning \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 10 --time 5 --only office,thin_wall,maze" \
-      bench/results/planning_solve_times.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 5 --time 10 --only bug_trap,twisted_passage" \
-      bench/results/planning_solve_times_hard.md
-  fi
-fi
+[[ $readme -eq 1 ]] && paste_readme
 echo "run_all.sh: bench/results written in $((SECONDS - started)) s$([[ $readme -eq 1 ]] && echo ', README.md blocks speed and planning pasted')" >&2
