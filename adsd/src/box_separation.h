@@ -20,30 +20,43 @@ namespace adsd::detail {
 /// so it is always sound; the value only keeps the division-free comparison below well scaled.
 inline constexpr double kParallelEdgeAxis2 = 1e-12;
 
+/// \brief What boxLowerBound found: a lower bound of the boxes' distance, and how near they are by
+/// their circumscribed spheres (centre distance minus radii, negative when the spheres overlap):
+/// the key that orders a traversal's children. Measured on the scenes benchmark's camels at 1 %
+/// of the diagonal, ordering by it found pairs within the threshold with ~1/3 less work than
+/// ordering by the lower bound, which is 0 for every overlapping pair and so cannot rank them.
+struct BoxPairBound {
+  double lower;
+  double nearness;
+};
+
 /// \brief A lower bound of the distance between box A (A's frame) and box B (B's frame, placed in
 /// A's by x_A = rotationBA x_B + translationBA), worked out only as far as needed: it returns as
 /// soon as an axis proves a bound above \p bound (>= 0, length units, including the caller's
 /// roundoff allowance: projections of coordinates of size M carry errors of a few eps M). When no
-/// axis does, it returns the bound of the face axes (possibly <= 0), the key that orders the
-/// traversal's children nearest first.
+/// axis does, the lower bound is the face axes' (possibly 0).
 ///
 /// In A's box frame, A is [-ha, ha] and B lies within the interval of its projections on each
 /// axis, so the positive parts of the three interval gaps form a vector whose length bounds the
 /// distance (two axis-aligned boxes): tighter than the largest single gap when the boxes are
 /// offset diagonally. The same holds in B's box frame.
-inline double boxLowerBound(const OrientedBox& a, const OrientedBox& b, const Eigen::Matrix3d& rotationBA,
-                            const Vec3& translationBA, double bound) {
+inline BoxPairBound boxLowerBound(const OrientedBox& a, const OrientedBox& b, const Eigen::Matrix3d& rotationBA,
+                                  const Vec3& translationBA, double bound) {
+  // The boxes' circumscribed spheres first: a dozen operations decide the pairs far apart.
+  const Vec3 centerOffset = rotationBA * b.center + translationBA - a.center;
+  const double sphereGap = centerOffset.norm() - a.half.norm() - b.half.norm();
+  if (sphereGap > bound) return {sphereGap, sphereGap};
   // B's centre and axes in A's box frame (columns of c are B's axes there).
-  const Vec3 t = a.axes.transpose() * (rotationBA * b.center + translationBA - a.center);
+  const Vec3 t = a.axes.transpose() * centerOffset;
   const Eigen::Matrix3d c = a.axes.transpose() * (rotationBA * b.axes);
   const Eigen::Matrix3d absC = c.cwiseAbs();
   const Vec3& ha = a.half;
   const Vec3& hb = b.half;
   const double bound2 = bound * bound;
   const double gapsA2 = (t.cwiseAbs() - ha - absC * hb).cwiseMax(0.0).squaredNorm();
-  if (gapsA2 > bound2) return std::sqrt(gapsA2);
+  if (gapsA2 > bound2) return {std::sqrt(gapsA2), sphereGap};
   const double gapsB2 = ((c.transpose() * t).cwiseAbs() - hb - absC.transpose() * ha).cwiseMax(0.0).squaredNorm();
-  if (gapsB2 > bound2) return std::sqrt(gapsB2);
+  if (gapsB2 > bound2) return {std::sqrt(gapsB2), sphereGap};
   // Edge-edge axes L = e_i x c_j, unnormalized: gap/|L| > bound <=> gap > 0 and gap^2 > bound^2 |L|^2.
   // B's reach is projected with the computed c (not the orthonormality identities of the
   // textbook test), so the error of c enters in proportion to |L| and the bound stays relative.
@@ -59,10 +72,10 @@ inline double boxLowerBound(const OrientedBox& a, const OrientedBox& b, const Ei
       const double reachA = ha[i1] * std::abs(axis[i1]) + ha[i2] * std::abs(axis[i2]);
       const double reachB = (c.transpose() * axis).cwiseAbs().dot(hb);
       const double gap = std::abs(axis.dot(t)) - reachA - reachB;
-      if (gap > 0.0 && gap * gap > bound2 * norm2) return gap / std::sqrt(norm2);
+      if (gap > 0.0 && gap * gap > bound2 * norm2) return {gap / std::sqrt(norm2), sphereGap};
     }
   }
-  return std::sqrt(std::max(gapsA2, gapsB2));
+  return {std::max(sphereGap, std::sqrt(std::max(gapsA2, gapsB2))), sphereGap};
 }
 
 }  // namespace adsd::detail

@@ -76,6 +76,7 @@ void Query::traverseTrees() {
     int depth;
     std::uint32_t maskA, maskB;
     double lower;
+    double nearness;  // BoxPairBound::nearness: which child goes first
   };
   Pending stack[kTraversalStackSize];
   int top = 0;
@@ -85,8 +86,8 @@ void Query::traverseTrees() {
     counters_.maxDepth = std::max(counters_.maxDepth, depth);
     const MeshHierarchy::Node& na = nodesA[a];
     const MeshHierarchy::Node& nb = nodesB[b];
-    const double lower = boxLowerBound(na.box, nb.box, rotationBA_, translationBA_, bound);
-    if (lower > bound) {
+    const BoxPairBound boxes = boxLowerBound(na.box, nb.box, rotationBA_, translationBA_, bound);
+    if (boxes.lower > bound) {
       ++counters_.pairsRejectedByBounds;
       dropped();
       return false;
@@ -105,13 +106,13 @@ void Query::traverseTrees() {
         return false;
       }
     }
-    out = Pending{a, b, depth, maskA, maskB, lower};
+    out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
     return true;
   };
-  // Pushes the pairs that survive, the nearer (smaller lower bound) last so that it is popped
-  // first: the upper bound falls fastest that way, and a validity query's proof comes sooner.
+  // Pushes the pairs that survive, the nearer last so that it is popped first: the upper bound
+  // falls fastest that way, and a validity query's proof comes sooner.
   auto pushNearestLast = [&](int count, Pending* candidates) {
-    if (count == 2 && candidates[0].lower < candidates[1].lower) std::swap(candidates[0], candidates[1]);
+    if (count == 2 && candidates[0].nearness < candidates[1].nearness) std::swap(candidates[0], candidates[1]);
     for (int k = 0; k < count; ++k) stack[top++] = candidates[k];
   };
 
