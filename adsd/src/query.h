@@ -80,6 +80,8 @@ class Query {
   /// spheres' gap and the separating-axis gaps along the six face normals of the two boxes.
   double nodeLowerBound(std::int32_t na, std::int32_t nb) const;
   void testAllPairs(const SubMesh& a, const SubMesh& b);
+  /// A first global upper bound from one greedy dive down both trees (tree_seed.cpp).
+  void seedUpperBoundFromTrees();
   // --- queries with hierarchies (tree_traversal.cpp) ---
   /// Depth-first over both trees, nearest pairs first, box tests before triangle tests; a
   /// threshold query stops at the first triangle pair within the threshold.
