@@ -119,14 +119,12 @@ TEST(BadInputCatalogue, MeshErrorsThroughAProblemFileNameTheKeyAndTheMesh) {
   EXPECT_EQ(message.rfind(":2: key 'problem.robot': " + lines + ": the file holds no triangles", 0), 0u) << message;
 }
 
-// DISABLED: a bug in adsd/io (reported to the lead; fix there, then enable). loadMesh runs
-// assimp's JoinIdenticalVertices before it checks coordinates, and a vertex with a NaN compares
-// "identical" to an earlier one (every comparison with NaN is false, so the distance test never
-// says "different"): the NaN vertex is silently replaced, and the file loads as a degenerate
-// triangle. Here the third vertex is NaN: 1 triangle on 2 vertices, no error. tests/io's NaN test
-// passes because its NaN vertex comes second. Reproducer:
-//   printf 'v 0 0 0\nv 1 0 0\nv nan 0.5 0.7\nf 1 2 3\n' > nan.obj; adsd distance nan.obj nan.obj  (exit 0)
-TEST(BadInputCatalogue, DISABLED_NanCoordinateIsReportedWhereverTheVertexIs) {
+// Was a bug in adsd/io: loadMesh ran assimp's JoinIdenticalVertices before it checked coordinates,
+// and a vertex with a NaN compares "identical" to an earlier one (every comparison with NaN is
+// false), so the NaN vertex was silently replaced and the file loaded as a degenerate triangle.
+// Here the third vertex is NaN (tests/io's NaN test has it second, which passed). Reproducer:
+//   printf 'v 0 0 0\nv 1 0 0\nv nan 0.5 0.7\nf 1 2 3\n' > nan.obj; adsd distance nan.obj nan.obj  (was exit 0)
+TEST(BadInputCatalogue, NanCoordinateIsReportedWhereverTheVertexIs) {
   Scratch dir;
   writeMeshes(dir);
   const std::string goal = "goal.x = 0\ngoal.y = 0.5\ngoal.theta = 0\n";

@@ -1,5 +1,6 @@
 #include "adsd/io/load_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -165,6 +166,17 @@ void requireConsistentScene(const aiScene& scene, const std::string& path) {
                            std::to_string(face.mIndices[k]) + " but the mesh has " +
                            std::to_string(mesh->mNumVertices) + " vertices");
         }
+      }
+    }
+    // Before post-processing: JoinIdenticalVertices takes a vertex with a NaN coordinate for a
+    // copy of an earlier vertex (every comparison with NaN is false, so "different" is never
+    // found) and replaces it, which would load the file as a degenerate triangle, no error.
+    const bool hasSurface = std::any_of(mesh->mFaces, mesh->mFaces + mesh->mNumFaces,
+                                        [](const aiFace& face) { return face.mNumIndices >= 3; });
+    for (unsigned v = 0; hasSurface && v < mesh->mNumVertices; ++v) {
+      const aiVector3D& p = mesh->mVertices[v];
+      if (!Vec3(p.x, p.y, p.z).allFinite()) {
+        throw InputError(path + ": " + meshName + " has a vertex with a non-finite coordinate " + formatPoint(p));
       }
     }
     if (mesh->mNumBones > 0 && mesh->mBones == nullptr) throw InputError(path + ": " + meshName + " lacks its bones");
