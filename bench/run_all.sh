@@ -95,7 +95,7 @@ echo "=== $(date -u '+%Y-%m-%d %H:%M UTC'); binaries of $build, built from $sour
 step distance_vs_fcl sh -c "'$build/bench/bench_distance_vs_fcl' > '$staging/distance_vs_fcl.txt'"
 step scenes sh -c "'$build/bench/bench_scenes' --out '$staging' > '$staging/scenes.txt'"
 # The tables quote the command that made them; they are read from bench/results.
-sed -i "s#--out $staging#--out bench/results#" "$staging/scenes.md" "$staging/table1.md"
+sed -i "s#$staging/#bench/results/#g; s#--out $staging#--out bench/results#" "$staging/scenes.md" "$staging/table1.md" "$staging/scenes.txt"
 step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
 if [[ $planning -eq 1 ]]; then
   # The problems that our checker and FCL's both solve within seconds, ten runs each; the bug trap
