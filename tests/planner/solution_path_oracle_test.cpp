@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -45,15 +47,26 @@ struct PathWalk {
   double minClearance = std::numeric_limits<double>::infinity();  ///< the oracle's, over the walk
 };
 
+/// The environment's parts joined into one mesh again: the oracle places the robot's triangles
+/// once per call, so one call over the whole world is much cheaper than one per part.
+Mesh joined(const std::vector<Mesh>& parts) {
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+  for (const Mesh& part : parts) {
+    const auto base = static_cast<std::uint32_t>(vertices.size());
+    vertices.insert(vertices.end(), part.vertices().begin(), part.vertices().end());
+    for (const TriangleIndices& t : part.triangles()) triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  return Mesh(std::move(vertices), std::move(triangles), "environment");
+}
+
 /// The oracle's distance from the robot at \p pose to the environment, and whether they meet.
-std::pair<double, bool> oracleAt(const RigidBodyScene& scene, const Pose& pose) {
+std::pair<double, bool> oracleAt(const RigidBodyScene& scene, const Mesh& environment, const Pose& pose) {
   double distance = std::numeric_limits<double>::infinity();
   bool intersecting = false;
   for (const Mesh& r : scene.robot) {
-    for (const Mesh& e : scene.environment) {
-      distance = std::min(distance, oracle::meshDistance(r, pose, e, Pose::Identity()).value);
-      intersecting = intersecting || oracle::meshesIntersect(r, pose, e, Pose::Identity());
-    }
+    distance = std::min(distance, oracle::meshDistance(r, pose, environment, Pose::Identity()).value);
+    intersecting = intersecting || oracle::meshesIntersect(r, pose, environment, Pose::Identity());
   }
   return {distance, intersecting};
 }
@@ -68,6 +81,7 @@ PathWalk walkWithOracle(const PlanningProblem& problem, const og::PathGeometric&
   const ob::SpaceInformationPtr& si = problem.spaceInformation();
   const double spacing = kSampleSpacingFraction * sceneScale(scene);
   const double radius = robotRadius(scene);
+  const Mesh environment = joined(scene.environment);
   PathWalk walk;
   ob::ScopedState<> state(si);
   for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i) {
@@ -78,7 +92,7 @@ PathWalk walkWithOracle(const PlanningProblem& problem, const og::PathGeometric&
     double t = 0.0;
     while (true) {
       si->getStateSpace()->interpolate(a, b, t, state.get());
-      const auto [distance, intersecting] = oracleAt(scene, poseFromState(state.get(), scene.space));
+      const auto [distance, intersecting] = oracleAt(scene, environment, poseFromState(state.get(), scene.space));
       ++walk.states;
       walk.minClearance = std::min(walk.minClearance, distance);
       EXPECT_FALSE(intersecting) << what << ": motion " << i << " collides at t = " << t;
