@@ -405,8 +405,9 @@ std::vector<Family> triangleFamilies() {
                {0.6, 0.0, 0.1}, coplanarTouchingFar});
   f.push_back({"tri/degenerate-near", "segments and points (zero-area triangles) near each other and near faces, 0 or 1e-14..1 apart",
                -6, 6, {0.1, 0.2, 0.15}, degenerateNear});
+  // Apart: about 30 % of the sample (30.4 % of 20 000 cases, seed 7), so the floor sits below it.
   f.push_back({"tri/slivers", "slivers (smallest angle 1e-16..1e-6 rad) crossed by or 0..1 x scene beside segments, points, slivers, faces",
-               -6, 6, {0.1, 0.1, 0.3}, slivers});
+               -6, 6, {0.1, 0.1, 0.2}, slivers});
   f.push_back({"tri/tilted-faces", "nearly parallel faces (tilt 1e-16..1e-3 rad) 1e-14..1e-1 x scene apart or crossing",
                -6, 6, {0.1, 0.1, 0.1}, tiltedFaces});
   return f;
