@@ -94,21 +94,6 @@ void Query::visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hin
     return;
   }
 
-  if (a.node >= 0) {
-    // With trees, GJK runs only on sub-meshes of comparable size: a robot-sized node against a
-    // room-sized one overlaps its hull almost surely, and the boxes' bounds already did the
-    // culling GJK would do (kTreeGjkSizeRatio).
-    const MeshHierarchy::Node& na = treeA_->nodes()[a.node];
-    const MeshHierarchy::Node& nb = treeB_->nodes()[b.node];
-    const double sizeA = na.box.half.norm();
-    const double sizeB = nb.box.half.norm();
-    if ((sizeA > tolerance::kTreeGjkSizeRatio * sizeB && !na.isLeaf()) ||
-        (sizeB > tolerance::kTreeGjkSizeRatio * sizeA && !nb.isLeaf())) {
-      ++counters_.pairsSplit;
-      splitAlongTrees(a, b, depth, hint);
-      return;
-    }
-  }
   // Stage one (sec. 4): GJK on the hulls of the two sub-meshes.
   ++counters_.gjkCalls;
   const GjkResult g = runGjk([&](const Vec3& d) { return supportA(a, d); }, [&](const Vec3& d) { return supportB(b, d); },
@@ -128,100 +113,13 @@ void Query::visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hin
       ++counters_.pairsRejectedByBounds;
       return;
     }
-    // From scratch, every separated pair is hashed (sec. 5). With trees, descending further is
-    // cheap (no re-partitioning, supports by branch and bound) and gives each smaller pair its
-    // own tighter bounds, so only pairs below kTreeHashPairs are hashed.
-    if (a.node < 0 || static_cast<std::uint64_t>(nA) * nB <= tolerance::kTreeHashPairs) {
-      ++counters_.pairsHashed;
-      hashStage(a, b, g);
-      return;
-    }
+    // Sec. 5: a separated pair goes to the hashing stage.
+    ++counters_.pairsHashed;
+    hashStage(a, b, g);
+    return;
   }
   ++counters_.pairsSplit;
-
-  if (a.node >= 0) {
-    splitAlongTrees(a, b, depth, g.direction);
-  } else {
-    splitAdaptively(a, b, depth, g.direction);
-  }
-}
-
-SubMesh Query::nodeA(std::int32_t i) const {
-  const MeshHierarchy::Node& n = treeA_->nodes()[i];
-  return SubMesh{n.t0, n.t1, 0, 0, i};
-}
-
-SubMesh Query::nodeB(std::int32_t i) const {
-  const MeshHierarchy::Node& n = treeB_->nodes()[i];
-  return SubMesh{n.t0, n.t1, 0, 0, i};
-}
-
-double Query::nodeLowerBound(std::int32_t na, std::int32_t nb) const {
-  // Box A in A's frame, box B in B's: the gap between their projections on a unit axis bounds the
-  // distance of everything inside them from below (the separating-axis test of oriented boxes,
-  // made quantitative). All 15 axes are tried: the faces of both boxes and the 9 edge pairs.
-  const OrientedBox& boxA = treeA_->nodes()[na].box;
-  const OrientedBox& boxB = treeB_->nodes()[nb].box;
-  const Eigen::Matrix3d c = boxA.axes.transpose() * (rotationBA_ * boxB.axes);  // B's axes in A's box frame
-  const Eigen::Matrix3d absC = c.cwiseAbs();
-  const Vec3 t = boxA.axes.transpose() * (toA(boxB.center) - boxA.center);
-  const Vec3& ha = boxA.half;
-  const Vec3& hb = boxB.half;
-  const Vec3 gapsA = t.cwiseAbs() - ha - absC * hb;
-  const Vec3 gapsB = (c.transpose() * t).cwiseAbs() - hb - absC.transpose() * ha;
-  double best = std::max(gapsA.maxCoeff(), gapsB.maxCoeff());
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const Vec3 axis = Vec3::Unit(i).cross(c.col(j));
-      const double norm = axis.norm();
-      if (norm < 1e-6) continue;  // (nearly) parallel edges: the face axes cover them
-      const double reachA = axis.cwiseAbs().dot(ha);
-      const double reachB = (c.transpose() * axis).cwiseAbs().dot(hb);
-      best = std::max(best, (std::abs(axis.dot(t)) - reachA - reachB) / norm);
-    }
-  }
-  return best;
-}
-
-void Query::splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n) {
-  // The child pairs go nearest first by their bounding spheres, which also drop pairs beyond the
-  // global upper bound before any GJK runs on them (sec. 6.2).
-  const MeshHierarchy::Node& na = treeA_->nodes()[a.node];
-  const MeshHierarchy::Node& nb = treeB_->nodes()[b.node];
-  // Split the node whose box is larger (the other stays whole unless the two are of a size):
-  // halving a small robot against a room-sized node only multiplies the pairs.
-  const double sizeA = na.box.half.norm();
-  const double sizeB = nb.box.half.norm();
-  const bool splitA = !na.isLeaf() && (nb.isLeaf() || sizeA >= tolerance::kTreeSplitBothRatio * sizeB);
-  const bool splitB = !nb.isLeaf() && (na.isLeaf() || sizeB >= tolerance::kTreeSplitBothRatio * sizeA);
-  std::int32_t partsA[2] = {a.node, -1};
-  std::int32_t partsB[2] = {b.node, -1};
-  if (splitA) {
-    partsA[0] = na.left;
-    partsA[1] = na.right;
-  }
-  if (splitB) {
-    partsB[0] = nb.left;
-    partsB[1] = nb.right;
-  }
-  Child children[4];
-  int count = 0;
-  for (std::int32_t pa : partsA) {
-    if (pa < 0) continue;
-    for (std::int32_t pb : partsB) {
-      if (pb < 0) continue;
-      insertNearestFirst(children, count,
-                         Child{static_cast<std::uint32_t>(pa), static_cast<std::uint32_t>(pb), nodeLowerBound(pa, pb)});
-    }
-  }
-  for (int k = 0; k < count && !done_; ++k) {
-    const Child& c = children[k];
-    if (skip(c.lower - roundoff_)) {
-      ++counters_.pairsRejectedByBounds;
-      continue;
-    }
-    visit(nodeA(static_cast<std::int32_t>(c.a)), nodeB(static_cast<std::int32_t>(c.b)), depth + 1, -n);
-  }
+  splitAdaptively(a, b, depth, g.direction);
 }
 
 void Query::splitAdaptively(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n) {

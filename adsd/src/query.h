@@ -47,14 +47,10 @@ struct DistanceScratch::Buffers {
 
 namespace detail {
 
-/// Largest d.x over a box (eq. 4 for a box): what bounds a subtree in the trees' branch and bound.
-inline double boxSupport(const OrientedBox& box, const Vec3& d) { return box.support(d); }
-
-/// A sub-mesh: triangles order[t0, t1) and, from scratch, their distinct vertices
-/// vertices[v0, v1); with a hierarchy, the tree node it is (node >= 0).
+/// A sub-mesh of a query from scratch: triangles order[t0, t1) and their distinct vertices
+/// vertices[v0, v1).
 struct SubMesh {
   std::uint32_t t0, t1, v0, v1;
-  std::int32_t node = -1;
   std::uint32_t triangles() const { return t1 - t0; }
 };
 
@@ -72,16 +68,7 @@ class Query {
   void visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hint);
   /// Stage three from scratch: the support-plane split of sec. 6.1, then the child pairs.
   void splitAdaptively(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n);
-  /// Stage three with hierarchies: the larger node's children, nearest pairs first.
-  void splitAlongTrees(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n);
-  SubMesh nodeA(std::int32_t i) const;
-  SubMesh nodeB(std::int32_t i) const;
-  /// Lower bound of the distance of two tree nodes from their boxes: the larger of the bounding
-  /// spheres' gap and the separating-axis gaps along the six face normals of the two boxes.
-  double nodeLowerBound(std::int32_t na, std::int32_t nb) const;
   void testAllPairs(const SubMesh& a, const SubMesh& b);
-  /// A first global upper bound from one greedy dive down both trees (tree_seed.cpp).
-  void seedUpperBoundFromTrees();
   // --- queries with hierarchies (tree_traversal.cpp) ---
   /// Depth-first over both trees, nearest pairs first, box tests before triangle tests; a
   /// threshold query stops at the first triangle pair within the threshold.

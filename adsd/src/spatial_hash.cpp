@@ -62,31 +62,11 @@ void Query::gatherSlabA(const SubMesh& a, const Vec3& ex, const Vec3& ey, const 
     frameBox(s, ex, ey, ez);
     buf_.slabA.push_back(s);
   };
-  if (a.node < 0) {
-    projectA(a, ez);
-    for (std::uint32_t i = a.t0; i < a.t1; ++i) {
-      const std::uint32_t t = orderA_[i];
-      const TriangleIndices& tri = a_.triangles()[t];
-      admit(t, std::max({buf_.projectionA[tri[0]], buf_.projectionA[tri[1]], buf_.projectionA[tri[2]]}));
-    }
-    return;
-  }
-  // With a tree: only boxes that reach up into the slab are entered.
-  std::int32_t stack[128];
-  int top = 0;
-  stack[top++] = a.node;
-  while (top > 0) {
-    const MeshHierarchy::Node& n = treeA_->nodes()[stack[--top]];
-    if (boxSupport(n.box, ez) < slabLow) continue;
-    if (!n.isLeaf()) {
-      stack[top++] = n.left;
-      stack[top++] = n.right;
-      continue;
-    }
-    for (std::uint32_t i = n.t0; i < n.t1; ++i) {
-      const std::uint32_t t = orderA_[i];
-      admit(t, std::max({ez.dot(a_.corner(t, 0)), ez.dot(a_.corner(t, 1)), ez.dot(a_.corner(t, 2))}));
-    }
+  projectA(a, ez);
+  for (std::uint32_t i = a.t0; i < a.t1; ++i) {
+    const std::uint32_t t = orderA_[i];
+    const TriangleIndices& tri = a_.triangles()[t];
+    admit(t, std::max({buf_.projectionA[tri[0]], buf_.projectionA[tri[1]], buf_.projectionA[tri[2]]}));
   }
 }
 
@@ -99,33 +79,11 @@ void Query::gatherSlabB(const SubMesh& b, const Vec3& ex, const Vec3& ey, const 
     frameBox(s, ex, ey, ez);
     buf_.slabB.push_back(s);
   };
-  if (b.node < 0) {
-    projectB(b, ez);
-    for (std::uint32_t i = b.t0; i < b.t1; ++i) {
-      const std::uint32_t t = orderB_[i];
-      const TriangleIndices& tri = b_.triangles()[t];
-      admit(t, std::min({buf_.projectionB[tri[0]], buf_.projectionB[tri[1]], buf_.projectionB[tri[2]]}));
-    }
-    return;
-  }
-  // With a tree, in B's frame: a box whose lowest point along ez lies above the slab is skipped.
-  const Vec3 ezInB = rotationAB_ * ez;
-  const double offset = ez.dot(translationBA_);
-  std::int32_t stack[128];
-  int top = 0;
-  stack[top++] = b.node;
-  while (top > 0) {
-    const MeshHierarchy::Node& n = treeB_->nodes()[stack[--top]];
-    if (-boxSupport(n.box, -ezInB) + offset > slabHigh) continue;
-    if (!n.isLeaf()) {
-      stack[top++] = n.left;
-      stack[top++] = n.right;
-      continue;
-    }
-    for (std::uint32_t i = n.t0; i < n.t1; ++i) {
-      const std::uint32_t t = orderB_[i];
-      admit(t, std::min({ezInB.dot(b_.corner(t, 0)), ezInB.dot(b_.corner(t, 1)), ezInB.dot(b_.corner(t, 2))}) + offset);
-    }
+  projectB(b, ez);
+  for (std::uint32_t i = b.t0; i < b.t1; ++i) {
+    const std::uint32_t t = orderB_[i];
+    const TriangleIndices& tri = b_.triangles()[t];
+    admit(t, std::min({buf_.projectionB[tri[0]], buf_.projectionB[tri[1]], buf_.projectionB[tri[2]]}));
   }
 }
 

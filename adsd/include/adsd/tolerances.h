@@ -58,21 +58,6 @@ inline constexpr double kMinSplitFraction = 1.0 / 8.0;
 /// rule, a little earlier).
 inline constexpr int kDirectPairLimit = 16;
 
-/// With hierarchies (rigid meshes): a separated sub-mesh pair goes to the hashing stage only when
-/// it has at most this many triangle pairs; larger ones descend the trees. Chosen on the cow pair
-/// at 1 % of the diagonal (bench_distance_vs_fcl): 64 and 256 were best, 16 and 4096 ~1.5x slower.
-inline constexpr std::uint64_t kTreeHashPairs = 256;
-
-/// With hierarchies: an overlapping node pair splits the larger node, and both nodes (as
-/// Algorithm 1 does) when neither box is this many times the other's size. 
-inline constexpr double kTreeSplitBothRatio = 0.5;
-
-/// With hierarchies: GJK runs on a node pair only when neither box is more than this many times
-/// the other's size; otherwise the larger node is split at once. Measured (callgrind-stable
-/// harness, 100 states near obstacles): office validity 70 -> 29 us, bug trap 120 -> 68 us; on
-/// the cow pair (nodes of a size) GJK still pays (0.25 ms with it vs 0.32 ms without).
-inline constexpr double kTreeGjkSizeRatio = 2.0;
-
 /// Hashing (sec. 5): slab pairs up to this count are tested all against all (with a box bound
 /// first): building the hash costs more than it saves below it.
 inline constexpr int kHashMinPairs = 256;
