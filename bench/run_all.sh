@@ -113,8 +113,9 @@ if [[ $planning -eq 1 ]]; then
 elif [[ -d bench/results ]]; then
   cp bench/results/planning_solve_times*.md "$staging/" 2>/dev/null || true
 fi
-# The stress table is the numerics suite's (tests/stress), pasted by its owner; keep it.
-[[ -f bench/results/stress.txt ]] && cp bench/results/stress.txt "$staging/"
+# The stress tables are the numerics suite's (tests/stress: the soak and a run of the current core),
+# pasted by its owner; keep them.
+for kept in bench/results/stress*.txt; do [[ -f "$kept" ]] && cp "$kept" "$staging/"; done
 echo "=== total: $((SECONDS - started)) s" >>"$log"
 
 rm -rf bench/results.old
