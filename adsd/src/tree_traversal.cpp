@@ -44,6 +44,21 @@ static_assert(MeshHierarchy::kLeafTriangles < 32, "a leaf's live triangles are t
 /// The bits a leaf's triangles occupy in a mask.
 inline std::uint32_t leafBits(const MeshHierarchy::Node& leaf) { return (1u << (leaf.t1 - leaf.t0)) - 1u; }
 
+/// The live triangles of a leaf of \p mesh (bit k: triangle order[t0 + k]) not proven farther
+/// than \p bound from \p box, which is given in the mesh's own frame.
+std::uint32_t trianglesNearBox(const Mesh& mesh, const std::uint32_t* order, const MeshHierarchy::Node& leaf,
+                               std::uint32_t mask, const OrientedBox& box, double bound) {
+  mask &= leafBits(leaf);
+  for (std::uint32_t i = leaf.t0; i < leaf.t1; ++i) {
+    const std::uint32_t bit = 1u << (i - leaf.t0);
+    if ((mask & bit) == 0) continue;
+    const std::uint32_t t = order[i];
+    const Vec3 corners[3] = {mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)};
+    if (triangleFartherFromBox(corners, box, bound)) mask &= ~bit;
+  }
+  return mask;
+}
+
 }  // namespace
 
 double Query::pruneBound() const {
@@ -159,15 +174,7 @@ std::uint32_t Query::leafTrianglesNearA(const MeshHierarchy::Node& leaf, std::ui
   box.axes = rotationBA_ * boxOfB.axes;
   box.center = toA(boxOfB.center);
   box.half = boxOfB.half;
-  mask &= leafBits(leaf);
-  for (std::uint32_t i = leaf.t0; i < leaf.t1; ++i) {
-    const std::uint32_t bit = 1u << (i - leaf.t0);
-    if ((mask & bit) == 0) continue;
-    const std::uint32_t t = orderA_[i];
-    const Vec3 corners[3] = {a_.corner(t, 0), a_.corner(t, 1), a_.corner(t, 2)};
-    if (triangleFartherFromBox(corners, box, bound)) mask &= ~bit;
-  }
-  return mask;
+  return trianglesNearBox(a_, orderA_, leaf, mask, box, bound);
 }
 
 std::uint32_t Query::leafTrianglesNearB(const MeshHierarchy::Node& leaf, std::uint32_t mask, const OrientedBox& boxOfA,
@@ -177,15 +184,7 @@ std::uint32_t Query::leafTrianglesNearB(const MeshHierarchy::Node& leaf, std::ui
   box.axes = rotationAB_ * boxOfA.axes;
   box.center = rotationAB_ * (boxOfA.center - translationBA_);
   box.half = boxOfA.half;
-  mask &= leafBits(leaf);
-  for (std::uint32_t i = leaf.t0; i < leaf.t1; ++i) {
-    const std::uint32_t bit = 1u << (i - leaf.t0);
-    if ((mask & bit) == 0) continue;
-    const std::uint32_t t = orderB_[i];
-    const Vec3 corners[3] = {b_.corner(t, 0), b_.corner(t, 1), b_.corner(t, 2)};
-    if (triangleFartherFromBox(corners, box, bound)) mask &= ~bit;
-  }
-  return mask;
+  return trianglesNearBox(b_, orderB_, leaf, mask, box, bound);
 }
 
 void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, const MeshHierarchy::Node& nb,
