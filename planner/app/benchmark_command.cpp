@@ -13,6 +13,10 @@
 // that every shard writes its own files (`ompl_benchmark_statistics` merges many logs into one
 // database). --log-only writes the log and stops (shards on machines without Python).
 //
+// Memory does not grow with the run count: each run's record goes to a spool file beside the log
+// as soon as the run is done (SpooledBenchmarkLog), and the log is assembled from the spools at
+// the end (through a temporary name; the spools are removed, also on error).
+//
 // Each run records, beside OMPL's own properties: the checker and the motion validator, the run's
 // index, and the planner's own queries: validity checks and clearance queries with their time,
 // motion checks. These counters are read when the planner's solve returns, before the benchmark's
@@ -32,7 +36,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -54,6 +57,7 @@
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
 #include "commands.h"
+#include "spooled_benchmark_log.h"
 
 namespace adsd::app {
 
@@ -62,7 +66,6 @@ namespace {
 using namespace adsd::planner;
 namespace fs = std::filesystem;
 namespace ob = ompl::base;
-namespace og = ompl::geometric;
 namespace ot = ompl::tools;
 
 const char* kUsage =
@@ -279,8 +282,8 @@ struct Combination {
   /// Written by the planning thread when solve returns; read in the post-run event, which runs
   /// after Benchmark has joined that thread.
   RunQueries atSolveEnd;
-  /// The runs gathered over the one-run calls of Benchmark::benchmark.
-  ot::Benchmark::CompleteExperiment gathered;
+  /// OMPL's description of the set-up (space, validity checker, planners), from its first run.
+  std::string setupInfo;
 
   std::string label() const { return std::string(name(checker)) + ", " + name(motion); }
 };
@@ -392,49 +395,6 @@ class ProgressBar {
   bool terminal_;
   std::string current_;
 };
-
-// ---- the experiment and its log ----------------------------------------------------------------
-
-/// Adds the one run of each planner that a call of Benchmark::benchmark recorded to \p into (the
-/// first call gives everything else too: names, settings, set-up text, machine).
-void appendRuns(ot::Benchmark::CompleteExperiment& into, const ot::Benchmark::CompleteExperiment& call) {
-  if (into.planners.empty()) {
-    into = call;
-    return;
-  }
-  for (std::size_t i = 0; i < into.planners.size() && i < call.planners.size(); ++i) {
-    auto& p = into.planners[i];
-    const auto& q = call.planners[i];
-    p.runs.insert(p.runs.end(), q.runs.begin(), q.runs.end());
-    p.runsProgressData.insert(p.runsProgressData.end(), q.runsProgressData.begin(), q.runsProgressData.end());
-  }
-}
-
-/// \brief Writes an experiment in OMPL's log format with OMPL's own writer
-/// (Benchmark::saveResultsToStream), given the experiment instead of recording it.
-class ExperimentLog : public ot::Benchmark {
- public:
-  ExperimentLog(og::SimpleSetup& setup, CompleteExperiment experiment) : ot::Benchmark(setup) {
-    exp_ = std::move(experiment);
-  }
-};
-
-/// Writes \p text producer's output to \p path through a temporary file renamed on success, so a
-/// failure leaves nothing half-written.
-void writeFileAtomically(const fs::path& path, const std::function<bool(std::ostream&)>& write) {
-  const fs::path temporary = path.string() + ".tmp";
-  {
-    std::ofstream out(temporary);
-    if (!out || !write(out) || !(out << std::flush)) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw InputError("cannot write '" + path.string() + "'");
-    }
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) throw InputError("cannot write '" + path.string() + "': " + error.message());
-}
 
 // ---- other programs ----------------------------------------------------------------------------
 
@@ -658,35 +618,41 @@ int benchmark(const std::vector<std::string>& args) {
 
   // The runs. Combinations take turns run by run, starting one further along each time, so that a
   // machine that slows down or speeds up (other jobs on shared cores) affects all of them alike.
+  // The log lists combination k's planners at k * plannerCount onwards: every combination's
+  // planners side by side in one experiment.
+  SpooledBenchmarkLog log(logPath);
+  std::optional<ot::Benchmark::CompleteExperiment> experiment;  // the first run's, without planners
   progress = std::make_unique<ProgressBar>(static_cast<std::size_t>(runCount) * combinations.size() * plannerCount);
   const auto started = std::chrono::steady_clock::now();
   for (currentRun = 0; currentRun < runCount; ++currentRun) {
     for (std::size_t k = 0; k < combinations.size(); ++k) {
-      Combination& c = *combinations[(currentRun + k) % combinations.size()];
+      const std::size_t index = (currentRun + k) % combinations.size();
+      Combination& c = *combinations[index];
       c.benchmark->benchmark(request);
-      appendRuns(c.gathered, c.benchmark->getRecordedExperimentData());
+      const ot::Benchmark::CompleteExperiment& call = c.benchmark->getRecordedExperimentData();
+      if (currentRun == 0) {
+        c.setupInfo = call.setupInfo;
+        if (index == 0) {
+          experiment = call;
+          experiment->planners.clear();
+        }
+      }
+      log.append(index * plannerCount, call);
     }
   }
   progress->close();
   const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  // One experiment: every combination's planners side by side.
-  ot::Benchmark::CompleteExperiment experiment = combinations.front()->gathered;
-  experiment.name = file.name;
-  experiment.runCount = runCount;
-  experiment.totalDuration = totalSeconds;
-  experiment.seed = ompl::RNG::getSeed();
-  experiment.planners.clear();
-  experiment.setupInfo.clear();
-  std::size_t recorded = 0;
+  experiment->name = file.name;
+  experiment->runCount = runCount;
+  experiment->totalDuration = totalSeconds;
+  experiment->seed = ompl::RNG::getSeed();
+  experiment->setupInfo.clear();
   for (const auto& c : combinations) {
-    experiment.setupInfo += "==== adsd benchmark: checker " + std::string(name(c->checker)) + ", motion validator " +
-                            name(c->motion) + "\n" + c->gathered.setupInfo;
-    for (const auto& planner : c->gathered.planners) {
-      recorded += planner.runs.size();
-      experiment.planners.push_back(planner);
-    }
+    experiment->setupInfo += "==== adsd benchmark: checker " + std::string(name(c->checker)) + ", motion validator " +
+                             name(c->motion) + "\n" + c->setupInfo;
   }
+  const std::size_t recorded = log.runCount();
   const std::size_t expected = static_cast<std::size_t>(runCount) * combinations.size() * plannerCount;
   if (recorded != expected) {
     std::cerr << "adsd benchmark: warning: " << expected - recorded << " of " << expected
@@ -694,8 +660,7 @@ int benchmark(const std::vector<std::string>& args) {
   }
   if (recorded == 0) throw ToolFailure("no run was recorded");
 
-  ExperimentLog log(combinations.front()->problem->setup(), std::move(experiment));
-  writeFileAtomically(logPath, [&log](std::ostream& out) { return log.saveResultsToStream(out); });
+  log.write(*experiment);
   std::printf("log         %s (%zu runs in %.1f s)\n", logPath.c_str(), recorded, totalSeconds);
   if (a.logOnly) return 0;
 
