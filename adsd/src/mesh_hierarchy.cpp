@@ -20,6 +20,7 @@ namespace {
 void pad(OrientedBox& box) {
   const double slack = 8.0 * tolerance::kEpsilon * (box.center.cwiseAbs().maxCoeff() + box.half.maxCoeff());
   box.half.array() += slack;
+  box.radius = box.half.norm();
 }
 
 /// The extents of `points` along fixed axes.

@@ -80,12 +80,6 @@ class Query {
   /// those proven farther than `bound` (= limit + roundoff); both fall as the upper bound does.
   void testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, const MeshHierarchy::Node& nb,
                     std::uint32_t maskB, double& limit, double& bound);
-  /// The live triangles of a leaf of A (B) not proven farther than `bound` from a box of the
-  /// other tree (in the other mesh's frame).
-  std::uint32_t leafTrianglesNearA(const MeshHierarchy::Node& leaf, std::uint32_t mask, const OrientedBox& boxOfB,
-                                   double bound) const;
-  std::uint32_t leafTrianglesNearB(const MeshHierarchy::Node& leaf, std::uint32_t mask, const OrientedBox& boxOfA,
-                                   double bound) const;
   /// Appends the distinct vertices of triangles order[t0, t1) to `list`; returns the sub-mesh.
   static SubMesh collectVertices(const Mesh& mesh, const std::vector<std::uint32_t>& order, std::uint32_t t0,
                                  std::uint32_t t1, std::vector<std::uint32_t>& list,

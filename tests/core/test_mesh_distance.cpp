@@ -325,7 +325,9 @@ class MeshDistanceAgainstOracle : public ::testing::Test {
     // split every time (sec. 6), and the recursion goes deeper than one level somewhere.
     EXPECT_EQ(s.posesSplit, s.poses);
     EXPECT_GT(s.maxDepth, 1);
-    if (paperStages) EXPECT_GT(s.pairsHashed, 0u);
+    if (paperStages) {
+      EXPECT_GT(s.pairsHashed, 0u);
+    }
     // Close proximity: most poses separated, by a small fraction of the scene.
     EXPECT_LT(s.intersecting, s.poses / 2);
     EXPECT_LT(s.medianDistance, 0.05);
