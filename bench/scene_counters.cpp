@@ -1,0 +1,144 @@
+// bench_scene_counters: what one scene's queries cost, in work counted rather than in time alone:
+// for each query mode on prebuilt trees, the median time per query over R repetitions of the
+// scene's poses next to FCL's (prebuilt OBBRSS distance and collide, interleaved pose by pose),
+// and the mean number of node pairs, pairs dropped by bounds, and exact triangle pairs per query.
+// It is the profile behind issue 6's "say what bounds a ratio"; perf is then pointed at it with
+// `perf record bench_scene_counters --scenes problem_bug_trap --modes exact`.
+//
+//   bench_scene_counters [--scenes a,b,...] [--modes exact,tol,threshold,contact] [--repeat R]
+//
+// The poses are bench_scenes' (FCL places them; see bench/scenes/distance_scenes.h).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "adsd/distance.h"
+#include "adsd/error.h"
+#include "fcl_models.h"
+#include "scenes/distance_scenes.h"
+#include "timing.h"
+
+namespace {
+
+using adsd::bench::microsecondsOf;
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::size_t end = comma == std::string::npos ? text.size() : comma;
+    if (end > start) out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
+adsd::bench::Placement fclPlacement(const adsd::Mesh& a, const adsd::Mesh& b) {
+  auto modelA = adsd::bench::buildObbrss(a.vertices(), adsd::bench::fclTriangles(a));
+  auto modelB = adsd::bench::buildObbrss(b.vertices(), adsd::bench::fclTriangles(b));
+  auto hullA = adsd::bench::fclHull(a);
+  auto hullB = adsd::bench::fclHull(b);
+  return {[=](const adsd::Pose& pa, const adsd::Pose& pb) {
+            return std::max(0.0, adsd::bench::fclDistance(*modelA, pa, *modelB, pb).min_distance);
+          },
+          [=](const adsd::Pose& pa, const adsd::Pose& pb) { return adsd::bench::fclHullsOverlap(*hullA, pa, *hullB, pb); }};
+}
+
+double medianOf(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+/// The bench_scenes threshold: 1 % of the scene's reference length.
+constexpr double kThresholdFraction = 0.01;
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> scenes = {"problem_office", "problem_bug_trap", "problem_twisted_passage",
+                                     "problem_alpha_puzzle"};
+  std::vector<std::string> modes = {"exact", "tol", "threshold", "contact"};
+  int repeat = 20;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--scenes" && hasValue) {
+      scenes = splitList(argv[++i]);
+    } else if (arg == "--modes" && hasValue) {
+      modes = splitList(argv[++i]);
+    } else if (arg == "--repeat" && hasValue) {
+      repeat = std::atoi(argv[++i]);
+    } else {
+      std::fprintf(stderr, "usage: %s [--scenes a,b,...] [--modes exact,tol,threshold,contact] [--repeat R]\n", argv[0]);
+      return 2;
+    }
+  }
+  if (repeat < 1) {
+    std::fprintf(stderr, "bench_scene_counters: --repeat must be >= 1\n");
+    return 2;
+  }
+  try {
+    for (const std::string& name : scenes) {
+      adsd::bench::DistanceScene scene = adsd::bench::makeDistanceScene(name, {}, fclPlacement);
+      scene.a.buildHierarchy();
+      scene.b.buildHierarchy();
+      const auto fclA = adsd::bench::buildObbrss(scene.a.vertices(), adsd::bench::fclTriangles(scene.a));
+      const auto fclB = adsd::bench::buildObbrss(scene.b.vertices(), adsd::bench::fclTriangles(scene.b));
+      std::printf("%s: %zu + %zu triangles, %zu poses x %d\n", name.c_str(), scene.a.triangleCount(),
+                  scene.b.triangleCount(), scene.queryCount(), repeat);
+      for (const std::string& mode : modes) {
+        adsd::DistanceOptions options;
+        bool collide = false;
+        if (mode == "exact") {
+          options = adsd::DistanceOptions{};
+        } else if (mode == "tol") {
+          options = adsd::DistanceOptions::withTolerance(0.0, 1e-2);
+        } else if (mode == "threshold") {
+          options = adsd::DistanceOptions::aboveThreshold(kThresholdFraction * scene.referenceLength);
+          collide = true;
+        } else if (mode == "contact") {  // a validity check without a safety margin, as planners make
+          options = adsd::DistanceOptions::aboveThreshold(0.0);
+          collide = true;
+        } else {
+          std::fprintf(stderr, "bench_scene_counters: unknown mode '%s'\n", mode.c_str());
+          return 2;
+        }
+        adsd::DistanceScratch scratch;
+        std::vector<double> ours, theirs;
+        adsd::DistanceCounters total;
+        std::size_t queries = 0;
+        double sink = 0.0;
+        for (int r = 0; r < repeat; ++r) {
+          for (const adsd::bench::PosePair& p : scene.poses) {
+            adsd::DistanceResult result;
+            ours.push_back(microsecondsOf(
+                [&] { result = adsd::distance(scene.a, p.a, scene.b, p.b, options, scratch); }));
+            sink += result.distance;
+            total.subMeshPairs += result.counters.subMeshPairs;
+            total.pairsRejectedByBounds += result.counters.pairsRejectedByBounds;
+            total.trianglePairsTested += result.counters.trianglePairsTested;
+            ++queries;
+            theirs.push_back(microsecondsOf([&] {
+              sink += collide ? static_cast<double>(adsd::bench::fclCollide(*fclA, p.a, *fclB, p.b))
+                              : adsd::bench::fclDistance(*fclA, p.a, *fclB, p.b).min_distance;
+            }));
+          }
+        }
+        const double n = static_cast<double>(queries);
+        std::printf("  %-9s ours %8.2f us  fcl %-8s %8.2f us  ratio %5.3f  node pairs %7.1f  dropped %7.1f  triangle pairs %6.1f  (%g)\n",
+                    mode.c_str(), medianOf(ours), collide ? "collide" : "distance", medianOf(theirs),
+                    medianOf(ours) / medianOf(theirs), total.subMeshPairs / n, total.pairsRejectedByBounds / n,
+                    total.trianglePairsTested / n, sink > 0 ? 0.0 : 1.0);
+      }
+    }
+  } catch (const adsd::InputError& e) {
+    std::fprintf(stderr, "bench_scene_counters: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
