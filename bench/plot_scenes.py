@@ -31,7 +31,7 @@ def main(csv_path, out_dir):
     fig, axes = plt.subplots(lines, columns, figsize=(5.2 * columns, 4.2 * lines), squeeze=False)
     for ax, scene in zip(axes.flat, scenes):
         for r in (r for r in rows if r["scene"] == scene):
-            if r["method"] in ("fcl_collide", "ours_threshold"):
+            if r["method"] in ("fcl_collide", "ours_threshold", "ours_tree_threshold", "ours_tree_contact"):
                 continue  # yes/no answers: their error is a count of wrong decisions, in the table
             error = number(r["max_error"])
             if math.isnan(error) or int(r["oracle_queries"]) == 0:

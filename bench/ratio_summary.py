@@ -21,18 +21,21 @@ def main(path):
         return f"{a / b:.3g}" if a is not None and b else ""
 
     print("| scene | triangles | exact ÷ FCL rebuild (or refit) | exact, tree ÷ FCL prebuilt | exact ÷ FCL prebuilt"
-          " | threshold, tree ÷ FCL collide | threshold ÷ FCL collide | tol 1e-2 ÷ exact | tol 1e-2 ÷ exact, tree |")
+          " | validity (D = 0), tree ÷ FCL collide | threshold 1 %, tree ÷ FCL collide | tol 1e-2 ÷ exact"
+          " | tol 1e-2 ÷ exact, tree |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for s in order:
         deforming = "fcl_refit" in rows[s]
         rebuild = ratio(s, "ours_exact", "fcl_refit" if deforming else "fcl_rebuild")
         print(f"| {s} | {rows[s]['triangles']} | {rebuild} | {ratio(s, 'ours_tree_exact', 'fcl_prebuilt')} "
-              f"| {ratio(s, 'ours_exact', 'fcl_prebuilt')} | {ratio(s, 'ours_tree_threshold', 'fcl_collide')} "
-              f"| {ratio(s, 'ours_threshold', 'fcl_collide')} | {ratio(s, 'ours_tol_1e-02', 'ours_exact')} "
+              f"| {ratio(s, 'ours_exact', 'fcl_prebuilt')} | {ratio(s, 'ours_tree_contact', 'fcl_collide')} "
+              f"| {ratio(s, 'ours_tree_threshold', 'fcl_collide')} | {ratio(s, 'ours_tol_1e-02', 'ours_exact')} "
               f"| {ratio(s, 'ours_tree_tol_1e-02', 'ours_tree_exact')} |")
     print()
     print("Targets (issue 6): deforming ≤ 0.1 against FCL rebuild or refit; rigid exact clearance ≤ 1.0 against FCL"
-          " prebuilt; validity ≤ 1.0 against FCL collide; 1 % tolerance ≤ 0.3 of exact.")
+          " prebuilt; validity ≤ 1.0 against FCL collide (our threshold query at D = 0, the same question; the"
+          " 1 % threshold column asks another question, which FCL has no query for, and is shown for reference); 1 % tolerance ≤ 0.3"
+          " of exact.")
     print()
     print(in_words(rows, order))
 
@@ -77,9 +80,10 @@ def in_words(rows, order):
     tree = values("ours_tree_exact", "fcl_prebuilt", order)
     if tree:
         parts.append("- " + sides(tree, "Exact clearance with both trees prebuilt, ours ÷ FCL's") + ".")
-    validity = values("ours_tree_threshold", "fcl_collide", order)
+    validity = values("ours_tree_contact", "fcl_collide", order)
     if validity:
-        parts.append("- " + sides(validity, "Validity (our threshold query, tree prebuilt) ÷ FCL collide") + ".")
+        parts.append("- " + sides(validity, "Validity (our threshold query at D = 0, tree prebuilt) ÷ FCL collide")
+                     + ".")
     tol = values("ours_tree_tol_1e-02", "ours_tree_exact", order)
     if tol:
         met = sum(1 for r in tol.values() if r <= 0.3)
