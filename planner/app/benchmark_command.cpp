@@ -354,7 +354,8 @@ void addRunProperties(const Combination& c, unsigned runIndex, ot::Benchmark::Ru
 
 // ---- progress ----------------------------------------------------------------------------------
 
-/// \brief A progress bar on stderr: redrawn in place on a terminal, a line per tenth otherwise.
+/// \brief A progress bar on stderr: redrawn in place on a terminal; otherwise a line per tenth of
+/// the runs, and at least one a minute (a long benchmark's log shows how far it got).
 ///
 /// OMPL's own bar (Request::displayProgress) starts over at every call of Benchmark::benchmark;
 /// the runs here are one call each (interleaved across combinations), so the bar is ours.
@@ -370,7 +371,9 @@ class ProgressBar {
     ++done_;
     if (terminal_) {
       draw();
-    } else if (done_ * 10 / total_ != (done_ - 1) * 10 / total_ || done_ == total_) {
+    } else if (done_ * 10 / total_ != (done_ - 1) * 10 / total_ || done_ == total_ ||
+               std::chrono::steady_clock::now() - lastLine_ >= kLineEvery) {
+      lastLine_ = std::chrono::steady_clock::now();
       std::cerr << "adsd benchmark: " << done_ << "/" << total_ << " runs done\n";
     }
   }
@@ -390,10 +393,13 @@ class ProgressBar {
     std::cerr << line << std::flush;
   }
 
+  static constexpr std::chrono::seconds kLineEvery{60};
+
   std::size_t total_;
   std::size_t done_ = 0;
   bool terminal_;
   std::string current_;
+  std::chrono::steady_clock::time_point lastLine_ = std::chrono::steady_clock::now();
 };
 
 // ---- other programs ----------------------------------------------------------------------------
