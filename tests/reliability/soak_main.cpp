@@ -4,10 +4,19 @@
 // threads, in turn), solve, simplify, measure the path's clearance; every tenth run the problem
 // is rebuilt from its file (meshes loaded again). Memory that survives a run would show as growth.
 //
-//   adsd_soak PROBLEM.cfg MINUTES [SECONDS_PER_RUN]
+//   adsd_soak PROBLEM.cfg MINUTES [SECONDS_PER_RUN [HEAP.csv]]
+//
+// With HEAP.csv, one line per run, written after the run has released everything it made: the
+// heap bytes in use (glibc mallinfo2: uordblks, the small blocks in the arenas, plus hblkhd, the
+// blocks mmapped on their own), the arenas' size (arena: what the heap holds from the kernel,
+// in use or free) and the resident memory (VmRSS). In-use bytes that stay flat while the
+// resident memory creeps mean the allocator keeps freed memory, not that we hold it.
+#include <malloc.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -28,6 +37,16 @@ using Clock = std::chrono::steady_clock;
 constexpr int kRunsPerLoad = 10;
 const char* const kPlanners[] = {"rrtconnect", "prm"};
 
+/// Resident memory of this process in KiB (VmRSS of /proc/self/status), 0 if unreadable.
+long residentKib() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::atol(line.c_str() + 6);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -38,6 +57,15 @@ int main(int argc, char** argv) {
   const std::string cfg = argv[1];
   const double minutes = std::atof(argv[2]);
   const double secondsPerRun = argc > 3 ? std::atof(argv[3]) : 1.0;
+  std::FILE* heapLog = nullptr;
+  if (argc > 4) {
+    heapLog = std::fopen(argv[4], "w");
+    if (heapLog == nullptr) {
+      std::fprintf(stderr, "adsd_soak: cannot write '%s'\n", argv[4]);
+      return 2;
+    }
+    std::fprintf(heapLog, "run,seconds,in_use_bytes,arena_bytes,mmapped_bytes,rss_kib\n");
+  }
   ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
   try {
     const Clock::time_point end =
@@ -63,8 +91,18 @@ int main(int argc, char** argv) {
           return 1;
         }
       }
+      // The run's planner, its graph and its solution go now, not when the next run replaces them,
+      // so that what the heap holds between runs is what survives a run.
+      ss.clear();
+      ss.setPlanner(ompl::base::PlannerPtr());
       ++runs;
       const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+      if (heapLog != nullptr) {
+        const struct mallinfo2 heap = mallinfo2();
+        std::fprintf(heapLog, "%ld,%.1f,%zu,%zu,%zu,%ld\n", runs, elapsed, heap.uordblks + heap.hblkhd, heap.arena,
+                     heap.hblkhd, residentKib());
+        std::fflush(heapLog);
+      }
       if (elapsed - lastReport >= 60.0) {
         lastReport = elapsed;
         std::printf("%.0f s: %ld runs, %ld solved\n", elapsed, runs, solved);
