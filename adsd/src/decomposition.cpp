@@ -74,7 +74,7 @@ void Query::testAllPairs(const SubMesh& a, const SubMesh& b) {
       // tests/stress ThresholdModeNeverAnswersAnInfiniteDistance.)
       const Vec3 gap = (q0.cwiseMin(q1).cwiseMin(q2) - hiA).cwiseMax(loA - q0.cwiseMax(q1).cwiseMax(q2)).cwiseMax(0.0);
       if (std::isfinite(best_) && skip(gap.norm() - roundoff_)) continue;
-      const TrianglePairResult t = triangleDistance(p0, p1, p2, q0, q1, q2);
+      const TrianglePairResult t = triangleDistanceUpTo(p0, p1, p2, q0, q1, q2, enoughDistance());
       ++counters_.trianglePairsTested;
       offer(t.pointOnA, t.pointOnB, t.distance, ta, false, tb, false);
     }

@@ -110,6 +110,9 @@ class Query {
   void offer(const PointPair& pair);
 
   Vec3 toA(const Vec3& pointOfB) const { return rotationBA_ * pointOfB + translationBA_; }
+  /// What a triangle pair's distance may stop at (triangleDistanceUpTo): a validity query's
+  /// threshold, as any pair within it decides the query; nothing (-1) for the other modes.
+  double enoughDistance() const { return options_.mode == QueryMode::threshold ? options_.threshold : -1.0; }
 
   const Mesh& a_;
   const Mesh& b_;

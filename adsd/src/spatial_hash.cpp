@@ -48,7 +48,8 @@ void Query::testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb) {
   // test (the dropped bound is recorded by skip() for the interval).
   if (skip(boxDistance(ta, tb) - roundoff_)) return;
   const TrianglePairResult t =
-      triangleDistance(ta.corner[0], ta.corner[1], ta.corner[2], tb.corner[0], tb.corner[1], tb.corner[2]);
+      triangleDistanceUpTo(ta.corner[0], ta.corner[1], ta.corner[2], tb.corner[0], tb.corner[1], tb.corner[2],
+                           enoughDistance());
   ++counters_.trianglePairsTested;
   offer(t.pointOnA, t.pointOnB, t.distance, ta.triangle, false, tb.triangle, false);
 }

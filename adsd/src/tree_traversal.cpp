@@ -211,7 +211,7 @@ void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, con
         minSkippedLower_ = std::min(minSkippedLower_, limit);
         continue;
       }
-      const TrianglePairResult t = triangleDistance(cornersA[0], cornersA[1], cornersA[2], q[0], q[1], q[2]);
+      const TrianglePairResult t = triangleDistanceUpTo(cornersA[0], cornersA[1], cornersA[2], q[0], q[1], q[2], enoughDistance());
       ++counters_.trianglePairsTested;
       offer(t.pointOnA, t.pointOnB, t.distance, ta, false, orderB_[j], false);
       if (done_) return;

@@ -166,8 +166,8 @@ void offerEdgeEdge(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q
 // the minimum distance of two disjoint triangles is attained at a vertex of one and the face of
 // the other, or between two edges; intersecting triangles have an edge of one crossing the other
 // (or lie in one plane, where an edge–edge crossing or a contained vertex gives distance ~0).
-TrianglePairResult triangleDistance(const Vec3& a0In, const Vec3& a1In, const Vec3& a2In,
-                                    const Vec3& b0In, const Vec3& b1In, const Vec3& b2In) {
+TrianglePairResult triangleDistanceUpTo(const Vec3& a0In, const Vec3& a1In, const Vec3& a2In, const Vec3& b0In,
+                                        const Vec3& b1In, const Vec3& b2In, double enough) {
   // Work relative to a0: coordinates far from the origin (issue 3's large offsets) then lose
   // nothing in the differences that follow, as nearby doubles subtract exactly.
   const Vec3& origin = a0In;
@@ -175,9 +175,27 @@ TrianglePairResult triangleDistance(const Vec3& a0In, const Vec3& a1In, const Ve
   const Vec3 b[3] = {b0In - origin, b1In - origin, b2In - origin};
   const Face faceA(a[0], a[1], a[2]);
   const Face faceB(b[0], b[1], b[2]);
+  double scale = 0.0;
+  for (int i = 0; i < 3; ++i) scale = std::max({scale, a[i].cwiseAbs().maxCoeff(), b[i].cwiseAbs().maxCoeff()});
+  // Distances up to this are contact: reported as 0 below.
+  const double snap = tolerance::kContactSnapUlps * kEpsilon * scale;
+  // A candidate within `enough` may end the search; so may one within `snap`, since a minimum
+  // below it would be reported as 0 all the same.
+  const double stop = enough < 0.0 ? -1.0 : std::max(enough, snap);
+  const double stop2 = stop < 0.0 ? -1.0 : stop * stop;
 
-  TrianglePairResult result;
   Best best;
+  auto finish = [&] {
+    TrianglePairResult result;
+    result.distance = std::sqrt(best.distance2);
+    result.pointOnA = best.onA + origin;
+    result.pointOnB = best.onB + origin;
+    if (result.distance <= snap) {
+      result.distance = 0.0;
+      result.pointOnB = result.pointOnA;
+    }
+    return result;
+  };
   // An edge crossing the other triangle: the crossing point and its closest point on that
   // triangle form a candidate (of length ~0 when the crossing is real). Offered, not trusted:
   // for an edge lying in the other's plane the signs of the test are noise, and a false crossing
@@ -191,28 +209,25 @@ TrianglePairResult triangleDistance(const Vec3& a0In, const Vec3& a1In, const Ve
     if (segmentPiercesFace(b[i], b[j], faceA, hit)) {
       best.offer(closestOnFace(hit, faceA), hit);
     }
+    if (best.distance2 <= stop2) return finish();
   }
 
   for (int i = 0; i < 3; ++i) {
     best.offer(a[i], closestOnFace(a[i], faceB));
     best.offer(closestOnFace(b[i], faceA), b[i]);
   }
+  if (best.distance2 <= stop2) return finish();
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       offerEdgeEdge(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3], best);
     }
   }
+  return finish();
+}
 
-  double scale = 0.0;
-  for (int i = 0; i < 3; ++i) scale = std::max({scale, a[i].cwiseAbs().maxCoeff(), b[i].cwiseAbs().maxCoeff()});
-  result.distance = std::sqrt(best.distance2);
-  result.pointOnA = best.onA + origin;
-  result.pointOnB = best.onB + origin;
-  if (result.distance <= tolerance::kContactSnapUlps * kEpsilon * scale) {
-    result.distance = 0.0;
-    result.pointOnB = result.pointOnA;
-  }
-  return result;
+TrianglePairResult triangleDistance(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,
+                                    const Vec3& b2) {
+  return triangleDistanceUpTo(a0, a1, a2, b0, b1, b2, -1.0);
 }
 
 }  // namespace adsd

@@ -571,5 +571,44 @@ TEST(TriangleDistanceRandom, ClearlyCrossingTrianglesGiveExactlyZero) {
   }
 }
 
+/// triangleDistanceUpTo, the validity queries' version that may stop at the first candidate
+/// within `enough`, against the oracle: it decides "within enough?" as the minimum does, never
+/// reports less than the minimum, its witnesses realize what it reports, and when the minimum is
+/// clearly beyond `enough` it is triangleDistance's answer to the bit.
+TEST(TriangleDistanceRandom, UpToDecidesLikeTheMinimum) {
+  SeededRandom random(111);
+  int stoppedEarly = 0, within = 0, beyond = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Pairs from deeply overlapping to 0.1 apart, thresholds from 0 to 0.15.
+    const TrianglePair c = closePair(random, random.uniform(-1.0, 0.1));
+    const double enough = i % 4 == 0 ? 0.0 : random.uniform(0.0, 0.15);
+    const auto o = reference(c);
+    const double tolerance = kAccuracy * diagonal(c);
+    const TrianglePairResult full = production(c);
+    const TrianglePairResult r = triangleDistanceUpTo(c.a[0], c.a[1], c.a[2], c.b[0], c.b[1], c.b[2], enough);
+    ASSERT_TRUE(std::isfinite(r.distance) && r.pointOnA.allFinite() && r.pointOnB.allFinite()) << describe(c);
+    ASSERT_GE(r.distance, o.value - tolerance) << "below the minimum: " << describe(c);
+    ASSERT_NEAR((r.pointOnA - r.pointOnB).norm(), r.distance, tolerance) << describe(c);
+    ASSERT_LE(offTriangle(r.pointOnA, c.a), tolerance + kWitnessRounding * largestCoordinate(c)) << describe(c);
+    ASSERT_LE(offTriangle(r.pointOnB, c.b), tolerance + kWitnessRounding * largestCoordinate(c)) << describe(c);
+    if (o.value < enough - tolerance) {
+      ++within;
+      ASSERT_LE(r.distance, enough) << "minimum " << o.value << " within " << enough << ": " << describe(c);
+      stoppedEarly += r.distance != full.distance || r.pointOnA != full.pointOnA;
+    } else if (o.value > enough + tolerance) {
+      ++beyond;
+      ASSERT_EQ(r.distance, full.distance) << describe(c);
+      ASSERT_EQ(r.pointOnA, full.pointOnA) << describe(c);
+      ASSERT_EQ(r.pointOnB, full.pointOnB) << describe(c);
+    }
+  }
+  // The sample covers both sides, and the early stop happens (it is what the function is for).
+  std::printf("within %d, beyond %d, stopped early (answer differs from the minimum's) %d\n", within, beyond,
+              stoppedEarly);
+  EXPECT_GT(within, 3000);
+  EXPECT_GT(beyond, 3000);
+  EXPECT_GT(stoppedEarly, 200);
+}
+
 }  // namespace
 }  // namespace adsd

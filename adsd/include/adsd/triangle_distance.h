@@ -22,4 +22,13 @@ struct TrianglePairResult {
 TrianglePairResult triangleDistance(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0,
                                     const Vec3& b1, const Vec3& b2);
 
+/// \brief triangleDistance that may stop at the first candidate within \p enough: the result is
+/// then a distance between two actual points of the triangles, at most \p enough (or 0, as
+/// triangleDistance snaps touching triangles), not necessarily the minimum. When no candidate is
+/// within it, the result is triangleDistance's. A validity query needs no more, as any pair
+/// within its threshold decides it: intersecting triangles are then settled by the first edge
+/// found crossing the other triangle, the candidates tried first. A negative \p enough never stops.
+TrianglePairResult triangleDistanceUpTo(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0,
+                                        const Vec3& b1, const Vec3& b2, double enough);
+
 }  // namespace adsd
