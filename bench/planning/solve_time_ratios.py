@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Issue 6's end-to-end row: median solve time of RRTConnect and PRM with our checker ÷ with FCL's,
-per shipped problem, measured by `adsd benchmark` (both checkers interleaved run by run, one run).
+per shipped problem, measured by `adsd benchmark`, the two checkers' runs paired by seed.
 
 usage: solve_time_ratios.py --adsd PROGRAM --problems DIR [--out DIR] [--runs N] [--time SECONDS]
                             [--planners rrtconnect,prm] [--only office,maze,...] [--seed S]
@@ -8,10 +8,14 @@ usage: solve_time_ratios.py --adsd PROGRAM --problems DIR [--out DIR] [--runs N]
 For every PROBLEM.cfg in --problems (the build's problem_files directory: the shipped .cfg files
 next to the meshes the build generated), writes OUT/cfgs/PROBLEM.cfg: the file's [problem]
 section with absolute mesh paths and `objective.threshold` so high that any path meets it, then a
-[benchmark] section (--time, --runs, no simplification) and a [planner] section listing
---planners. Then runs
-  adsd benchmark OUT/cfgs/PROBLEM.cfg --checker both --motion discrete --out OUT/PROBLEM --no-plots
-and reads OUT/PROBLEM/PROBLEM.db (the database ompl_benchmark_statistics wrote).
+[benchmark] section (--time, one run, no simplification) and a [planner] section listing
+--planners. Then, for each run r and each checker C (the order alternating run by run), runs
+  adsd benchmark OUT/cfgs/PROBLEM.cfg --checker C --motion discrete --runs 1 --seed SEED+r
+                 --out OUT/PROBLEM/C-r --no-plots
+and reads the database ompl_benchmark_statistics wrote there. Both checkers' run r start from one
+seed (common random numbers), so a single-threaded planner such as RRTConnect draws the same
+samples with either, and the pair's times differ by the checking alone: far less noise than
+independent runs, whose solve times spread over a factor of ten.
 
 Why the threshold: the shipped files ask for short paths, and PRM then keeps improving its roadmap
 until the time limit (its solve time is the limit whatever the checker); with a threshold any path
@@ -121,8 +125,10 @@ def rows_for(problem, runs, seconds):
 
 def table(rows, command):
     lines = ["Command: `%s`. Median solve time over the runs (a run without an exact solution before the time limit "
-             "counts as the limit); planners stop at their first solution; both checkers interleaved run by run in one "
-             "`adsd benchmark`, discrete motion validator." % command, "",
+             "counts as the limit); planners stop at their first solution; discrete motion validator. Run r is one "
+             "`adsd benchmark --runs 1 --seed SEED+r` per checker, the two back to back (common random numbers: "
+             "RRTConnect then draws the same samples with either checker; PRM's two threads make its runs differ "
+             "anyway)." % command, "",
              "| problem | planner | runs | solved in time, ours | solved in time, FCL | median s, ours | "
              "median s, FCL | ours ÷ FCL |",
              "|---|---|---:|---:|---:|---:|---:|---:|"]
@@ -143,10 +149,12 @@ def main():
     parser.add_argument("--time", type=float, default=10.0, help="time limit per run in seconds (default 10)")
     parser.add_argument("--planners", default="rrtconnect,prm", help="planners (default rrtconnect,prm)")
     parser.add_argument("--only", help="comma-separated problem names (default: every .cfg in --problems)")
-    parser.add_argument("--seed", help="OMPL's seed, passed to adsd benchmark")
+    parser.add_argument("--seed", type=int, default=1, help="seed of run 0; run r uses seed + r (default 1)")
     args = parser.parse_args()
     if args.runs < 1 or not args.time > 0:
         parser.error("--runs and --time must be positive")
+    if args.seed < 1 or args.seed + args.runs - 1 > 4294967295:
+        parser.error("--seed: run seeds must lie in 1 .. 4294967295 (OMPL takes no seed 0)")
     if not os.access(args.adsd, os.X_OK):
         parser.error("no adsd program at '%s'" % args.adsd)
     problems = sorted(f[:-4] for f in os.listdir(args.problems) if f.endswith(".cfg"))
@@ -163,21 +171,30 @@ def main():
     for problem in problems:
         cfg = os.path.join(args.out, "cfgs", problem + ".cfg")
         with open(cfg, "w") as f:
-            f.write(variant_cfg(os.path.join(args.problems, problem + ".cfg"), planners, args.runs, args.time))
-        out_dir = os.path.join(args.out, problem)
-        command = [args.adsd, "benchmark", cfg, "--checker", "both", "--motion", "discrete", "--out", out_dir,
-                   "--no-plots"] + (["--seed", args.seed] if args.seed else [])
+            f.write(variant_cfg(os.path.join(args.problems, problem + ".cfg"), planners, 1, args.time))
         started = time.monotonic()
-        result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        if result.returncode != 0:
-            sys.stderr.write(result.stderr)
-            sys.exit("solve_time_ratios.py: %s failed (exit %d)" % (" ".join(command), result.returncode))
-        stem = os.path.join(out_dir, problem + (".seed-%s" % args.seed if args.seed else ""))
-        rows += rows_for(problem, read_runs(stem + ".db"), args.time)
+        runs = []
+        for r in range(args.runs):
+            # Common random numbers: run r of both checkers starts from the same seed, so that a
+            # single-threaded planner draws the same samples and builds the same tree with either
+            # checker (their answers agree, tests/planner), and the two times differ by the
+            # checking alone. The order alternates so that neither checker always runs first.
+            seed = args.seed + r
+            checkers = ("adsd", "fcl") if r % 2 == 0 else ("fcl", "adsd")
+            for checker in checkers:
+                out_dir = os.path.join(args.out, problem, "%s-%d" % (checker, r))
+                command = [args.adsd, "benchmark", cfg, "--checker", checker, "--motion", "discrete",
+                           "--runs", "1", "--seed", str(seed), "--out", out_dir, "--no-plots"]
+                result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+                if result.returncode != 0:
+                    sys.stderr.write(result.stderr)
+                    sys.exit("solve_time_ratios.py: %s failed (exit %d)" % (" ".join(command), result.returncode))
+                runs += read_runs(os.path.join(out_dir, "%s.seed-%d.db" % (problem, seed)))
+        rows += rows_for(problem, runs, args.time)
         print("solve_time_ratios.py: %s done in %.0f s" % (problem, time.monotonic() - started), file=sys.stderr)
 
-    command = "bench/planning/solve_time_ratios.py --runs %d --time %g --planners %s%s" % (
-        args.runs, args.time, args.planners, (" --only " + args.only) if args.only else "")
+    command = "bench/planning/solve_time_ratios.py --runs %d --time %g --planners %s --seed %d%s" % (
+        args.runs, args.time, args.planners, args.seed, (" --only " + args.only) if args.only else "")
     text = table(rows, command)
     with open(os.path.join(args.out, "solve_times.md.tmp"), "w") as f:
         f.write("<!-- generated by bench/planning/solve_time_ratios.py; do not edit -->\n" + text)
