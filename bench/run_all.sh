@@ -8,13 +8,15 @@
 # paste into FILE instead of README.md (same layout).
 #
 # BUILD_DIR (default: build) must hold a Release build of the targets
-#   bench_distance_vs_fcl bench_scenes adsd adsd_problems
+#   bench_distance_vs_fcl bench_scenes bench_scene_counters adsd adsd_problems
 # and the real meshes must be cached (problems/data/fetch_meshes.sh). Writes bench/results/:
 #   distance_vs_fcl.txt   bench_distance_vs_fcl (issue 2: cow x cow from scratch against FCL)
 #   scenes.csv, scenes.md, table1.md, time_vs_error.png, time_vs_triangles.png
 #                         bench_scenes: every scene, every method, against the oracle
 #   scenes.txt            what bench_scenes printed (per scene: checksums beside the oracle's)
 #   ratios.md             bench/ratio_summary.py: issue 6's distance ratios from scenes.csv
+#   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
+#                         triangle pairs) per mode beside the time, ours and FCL's (what bounds a ratio)
 #   planning_solve_times.md, planning_solve_times_hard.md
 #                         bench/planning/solve_time_ratios.py: issue 6's end-to-end row (RRTConnect
 #                         and PRM, median solve time with our checker and FCL's, interleaved)
@@ -45,7 +47,8 @@ paste_readme() {
   /usr/bin/python3 bench/update_readme.py "$readme_file" speed \
     "$build/bench/bench_distance_vs_fcl" bench/results/distance_vs_fcl.txt \
     "$build/bench/bench_scenes --out bench/results (the paper's Table 1)" bench/results/table1.md \
-    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (issue 6's ratios, medians)" bench/results/ratios.md
+    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (issue 6's ratios, medians)" bench/results/ratios.md \
+    "$build/bench/bench_scene_counters --repeat 20 (work per query on the planning problems)" bench/results/scene_counters.txt
   if [[ -f bench/results/planning_solve_times.md ]]; then
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 10 --time 5 --only office,thin_wall,maze" \
@@ -58,7 +61,7 @@ if [[ $paste_only -eq 1 ]]; then
   paste_readme
   exit 0
 fi
-for program in bench/bench_distance_vs_fcl bench/bench_scenes planner/app/adsd; do
+for program in bench/bench_distance_vs_fcl bench/bench_scenes bench/bench_scene_counters planner/app/adsd; do
   [[ -x "$build/$program" ]] || { echo "run_all.sh: no $build/$program (build the targets first, see --help)" >&2; exit 2; }
 done
 [[ -d "$build/problem_files" ]] || { echo "run_all.sh: no $build/problem_files (build adsd_problems)" >&2; exit 2; }
@@ -97,6 +100,7 @@ step scenes sh -c "'$build/bench/bench_scenes' --out '$staging' > '$staging/scen
 # The tables quote the command that made them; they are read from bench/results.
 sed -i "s#$staging/#bench/results/#g; s#--out $staging#--out bench/results#" "$staging/scenes.md" "$staging/table1.md" "$staging/scenes.txt"
 step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
+step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
 if [[ $planning -eq 1 ]]; then
   # The problems that our checker and FCL's both solve within seconds, ten runs each; the bug trap
   # and the twisted passage need seconds per run, five runs each. The cow doorway and the alpha
