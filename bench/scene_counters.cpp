@@ -20,6 +20,7 @@
 #include "adsd/distance.h"
 #include "adsd/error.h"
 #include "fcl_models.h"
+#include "fcl_placement.h"
 #include "scenes/distance_scenes.h"
 #include "timing.h"
 
@@ -39,16 +40,6 @@ std::vector<std::string> splitList(const std::string& text) {
   return out;
 }
 
-adsd::bench::Placement fclPlacement(const adsd::Mesh& a, const adsd::Mesh& b) {
-  auto modelA = adsd::bench::buildObbrss(a.vertices(), adsd::bench::fclTriangles(a));
-  auto modelB = adsd::bench::buildObbrss(b.vertices(), adsd::bench::fclTriangles(b));
-  auto hullA = adsd::bench::fclHull(a);
-  auto hullB = adsd::bench::fclHull(b);
-  return {[=](const adsd::Pose& pa, const adsd::Pose& pb) {
-            return std::max(0.0, adsd::bench::fclDistance(*modelA, pa, *modelB, pb).min_distance);
-          },
-          [=](const adsd::Pose& pa, const adsd::Pose& pb) { return adsd::bench::fclHullsOverlap(*hullA, pa, *hullB, pb); }};
-}
 
 double medianOf(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -95,7 +86,7 @@ int main(int argc, char** argv) {
               repeat);
   try {
     for (const std::string& name : scenes) {
-      adsd::bench::DistanceScene scene = adsd::bench::makeDistanceScene(name, {}, fclPlacement);
+      adsd::bench::DistanceScene scene = adsd::bench::makeDistanceScene(name, {}, adsd::bench::fclPlacement);
       scene.a.buildHierarchy();
       scene.b.buildHierarchy();
       const auto fclA = adsd::bench::buildObbrss(scene.a.vertices(), adsd::bench::fclTriangles(scene.a));

@@ -54,6 +54,7 @@
 #include "adsd/error.h"
 #include "adsd/mesh_hierarchy.h"
 #include "fcl_models.h"
+#include "fcl_placement.h"
 #include "oracle.h"
 #include "scenes/distance_scenes.h"
 #include "timing.h"
@@ -147,20 +148,6 @@ Options parseOptions(int argc, char** argv) {
     }
   }
   return o;
-}
-
-/// FCL places the poses: the scenes then do not depend on the code under test.
-adsd::bench::Placement fclPlacement(const adsd::Mesh& a, const adsd::Mesh& b) {
-  auto modelA = adsd::bench::buildObbrss(a.vertices(), adsd::bench::fclTriangles(a));
-  auto modelB = adsd::bench::buildObbrss(b.vertices(), adsd::bench::fclTriangles(b));
-  auto hullA = adsd::bench::fclHull(a);
-  auto hullB = adsd::bench::fclHull(b);
-  return {[=](const adsd::Pose& pa, const adsd::Pose& pb) {
-            return std::max(0.0, adsd::bench::fclDistance(*modelA, pa, *modelB, pb).min_distance);
-          },
-          [=](const adsd::Pose& pa, const adsd::Pose& pb) {
-            return adsd::bench::fclHullsOverlap(*hullA, pa, *hullB, pb);
-          }};
 }
 
 std::string formatParameter(double p) {
@@ -625,7 +612,7 @@ int run(const Options& options, const std::string& command) {
   bool allAgree = true;
   bool fclProblems = false;
   for (const std::string& name : options.scenes) {
-    DistanceScene scene = adsd::bench::makeDistanceScene(name, size, fclPlacement);
+    DistanceScene scene = adsd::bench::makeDistanceScene(name, size, adsd::bench::fclPlacement);
     SceneOutcome outcome;
     const double seconds = 1e-6 * adsd::bench::microsecondsOf([&] { outcome = runScene(scene, oracleBudget, deformingFclStride); });
     std::printf("%-24s %7zu triangles, %4zu queries, %2zu oracle queries: ours_exact checksum on them %.15e, "
