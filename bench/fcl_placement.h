@@ -17,7 +17,9 @@ inline Placement fclPlacement(const Mesh& a, const Mesh& b) {
   auto modelB = buildObbrss(b.vertices(), fclTriangles(b));
   auto hullA = fclHull(a);
   auto hullB = fclHull(b);
-  return {[=](const Pose& pa, const Pose& pb) { return std::max(0.0, fclDistance(*modelA, pa, *modelB, pb).min_distance); },
+  return {[=](const Pose& pa, const Pose& pb) {
+            return std::max(0.0, fclDistance(*modelA, pa, *modelB, pb).min_distance);
+          },
           [=](const Pose& pa, const Pose& pb) { return fclHullsOverlap(*hullA, pa, *hullB, pb); }};
 }
 

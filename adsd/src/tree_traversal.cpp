@@ -117,7 +117,8 @@ void Query::traverseTrees() {
     counters_.maxDepth = std::max(counters_.maxDepth, depth);
     const MeshHierarchy::Node& na = nodesA[a];
     const MeshHierarchy::Node& nb = nodesB[b];
-    const BoxPairBound boxes = placedB ? boxLowerBound(na.box, *placedB, bound) : boxLowerBound(nb.box, *placedA, bound);
+    const BoxPairBound boxes =
+        placedB ? boxLowerBound(na.box, *placedB, bound) : boxLowerBound(nb.box, *placedA, bound);
     if (boxes.lower > bound) {
       ++counters_.pairsRejectedByBounds;
       dropped();
@@ -220,7 +221,8 @@ void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, con
         minSkippedLower_ = std::min(minSkippedLower_, limit);
         continue;
       }
-      const TrianglePairResult t = triangleDistanceUpTo(cornersA[0], cornersA[1], cornersA[2], q[0], q[1], q[2], enoughDistance());
+      const TrianglePairResult t =
+          triangleDistanceUpTo(cornersA[0], cornersA[1], cornersA[2], q[0], q[1], q[2], enoughDistance());
       ++counters_.trianglePairsTested;
       offer(t.pointOnA, t.pointOnB, t.distance, ta, false, orderB_[j], false);
       if (done_) return;
