@@ -23,7 +23,22 @@ struct SlabTriangle {
   std::uint32_t triangle;
 };
 
+/// A pair of tree nodes still to decide in a traversal (tree_traversal.cpp), with the lower bound
+/// found for it (the order's key, checked again when it is taken: the bound may have fallen
+/// meanwhile). When a node is a leaf, its mask says which of its triangles are not yet proven
+/// farther than the bound from the other node (bit k: triangle t0 + k): a triangle far from a
+/// box is far from everything the box holds.
+struct PendingNodePair {
+  std::int32_t a, b;
+  int depth;
+  std::uint32_t maskA, maskB;
+  double lower;
+  double nearness;  // BoxPairBound::nearness: the tie-break among equal lower bounds
+};
+
 struct DistanceScratch::Buffers {
+  // The traversal's pending node pairs: a stack for validity queries, a heap for the others.
+  std::vector<PendingNodePair> pendingNodePairs;
   // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
   // them in place (depth first, so a range holds the same set whenever it is revisited).
   std::vector<std::uint32_t> orderA, orderB;
@@ -70,8 +85,9 @@ class Query {
   void splitAdaptively(const SubMesh& a, const SubMesh& b, int depth, const Vec3& n);
   void testAllPairs(const SubMesh& a, const SubMesh& b);
   // --- queries with hierarchies (tree_traversal.cpp) ---
-  /// Depth-first over both trees, nearest pairs first, box tests before triangle tests; a
-  /// threshold query stops at the first triangle pair within the threshold.
+  /// Over both trees' node pairs, box tests before triangle tests: best first by lower bound
+  /// when the query lowers an upper bound; depth first, nearest first, for a threshold query,
+  /// which stops at the first triangle pair within the threshold.
   void traverseTrees();
   /// What pairs must be proven farther than (before the roundoff allowance) to be dropped: the
   /// global upper bound of sec. 6.2, or the threshold, cap or tolerance the mode allows.

@@ -1,5 +1,6 @@
-// Queries between two rigid meshes with sub-mesh trees: a depth-first traversal of node pairs,
-// nearest first, each pair dropped by the cheapest sound test that proves it cannot matter.
+// Queries between two rigid meshes with sub-mesh trees: a traversal of node pairs (best first by
+// lower bound for queries that lower an upper bound, depth first for validity queries), each
+// pair dropped by the cheapest sound test that proves it cannot matter.
 //
 // The paper's stages exist to find and cull without preprocessing (sec. 4-6). With trees built
 // once, the boxes already hold what GJK and the hash grid would work out per query, so neither
@@ -10,11 +11,8 @@
 // "farther"), and only the pairs no filter separates reach the exact triangle distance. A
 // validity query stops at the first triangle pair within D.
 //
-// Today distance.cpp sends validity queries here. The traversal answers every mode (pruneBound
-// holds each mode's rule). Exact queries sent here measured faster than on the trees'
-// GJK-and-hashing path on 10 of 11 scenes of bench_scenes (ours ÷ FCL prebuilt 0.43-1.7 against
-// 0.73-4.2, same day), but still descend that path: test_mesh_distance expects every tree
-// scene's exact queries to reach the hashing stage.
+// distance.cpp sends every query between two meshes with trees here (pruneBound holds each
+// mode's rule); the paper's stages answer queries from scratch (decomposition.cpp).
 
 #include <algorithm>
 
@@ -27,11 +25,6 @@
 namespace adsd::detail {
 
 namespace {
-
-/// Node pairs waiting on the traversal stack at most. Each pop pushes at most two pairs and the
-/// trees are median-split (depth <= 32 for 2^32 triangles), so the stack never holds more than
-/// depthA + depthB + 2 entries.
-constexpr int kTraversalStackSize = 160;
 
 /// How large a box is, for choosing which node of a pair to split: the larger one, as halving
 /// a small robot part against a room-sized node only multiplies the pairs.
@@ -88,19 +81,7 @@ void Query::traverseTrees() {
   // lower bound for the result's interval (in threshold mode D itself, as the status promises).
   auto dropped = [&] { minSkippedLower_ = std::min(minSkippedLower_, limit); };
 
-  // A pair of nodes still to decide, with the lower bound found for it (the order's key, checked
-  // again when popped: the bound may have fallen meanwhile). When a node is a leaf, its mask says
-  // which of its triangles are not yet proven farther than the bound from the other node (bit k:
-  // triangle t0 + k): a triangle far from a box is far from everything the box holds.
-  struct Pending {
-    std::int32_t a, b;
-    int depth;
-    std::uint32_t maskA, maskB;
-    double lower;
-    double nearness;  // BoxPairBound::nearness: which child goes first
-  };
-  Pending stack[kTraversalStackSize];
-  int top = 0;
+  using Pending = PendingNodePair;
   const Vec3 translationAB = -(rotationAB_ * translationBA_);  // A's frame -> B's frame
   // Two leaves meeting: queries that lower an upper bound refine both leaves' triangles against
   // the other's box, since every triangle pair left costs an 11-axis filter and often an exact
@@ -152,53 +133,79 @@ void Query::traverseTrees() {
     out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
     return true;
   };
-  // Pushes the pairs that survive, the nearer last so that it is popped first: the upper bound
-  // falls fastest that way, and a validity query's proof comes sooner. "Nearer": for queries that
-  // lower an upper bound, the smaller lower bound (ties, common among overlapping boxes, by
-  // nearness): on bench_scene_counters' bug trap a 1 % tolerance query then took ~25 % less time;
-  // for validity queries nearness alone (BoxPairBound).
-  const bool byLower = options_.mode != QueryMode::threshold;
-  auto pushNearestLast = [&](int count, Pending* candidates) {
-    if (count == 2) {
-      const bool firstNearer = byLower ? (candidates[0].lower < candidates[1].lower ||
-                                          (candidates[0].lower == candidates[1].lower &&
-                                           candidates[0].nearness < candidates[1].nearness))
-                                       : candidates[0].nearness < candidates[1].nearness;
-      if (firstNearer) std::swap(candidates[0], candidates[1]);
-    }
-    for (int k = 0; k < count; ++k) stack[top++] = candidates[k];
+
+  // The order pairs are taken in. A validity query goes depth first, nearer child first by
+  // nearness alone (BoxPairBound): it mostly ends at the first triangle pair within D, or else
+  // must visit every pair its boxes cannot drop, in any order. Queries that lower an upper bound
+  // go best first: always the pending pair of smallest lower bound, ties (common among
+  // overlapping boxes, whose bound is 0) by nearness. Depth first had found the final upper bound
+  // late: on bench_scene_counters' bug trap, exact queries then took 266 node pairs and 102
+  // triangle tests, against 120 and 6 when started from the final distance; best first took 181
+  // and 29, and on the alpha puzzle 907 node pairs instead of 2 276.
+  const bool bestFirst = options_.mode != QueryMode::threshold;
+  auto takenBefore = [bestFirst](const Pending& x, const Pending& y) {
+    if (!bestFirst) return x.nearness < y.nearness;
+    return x.lower < y.lower || (x.lower == y.lower && x.nearness < y.nearness);
+  };
+  // A heap whose front is the pair to take next (best first), or a stack (depth first).
+  std::vector<Pending>& pending = buf_.pendingNodePairs;
+  pending.clear();
+  auto later = [&](const Pending& x, const Pending& y) { return takenBefore(y, x); };
+  auto defer = [&](const Pending& pair) {
+    pending.push_back(pair);
+    if (bestFirst) std::push_heap(pending.begin(), pending.end(), later);
+  };
+  auto takeNext = [&] {
+    if (bestFirst) std::pop_heap(pending.begin(), pending.end(), later);
+    const Pending next = pending.back();
+    pending.pop_back();
+    return next;
   };
 
-  Pending root;
+  Pending p;
   const OrientedBox rootOfB = placedBox(nodesB[0].box, rotationBA_, translationBA_);
-  if (test(0, 0, 0, kAllLeafTriangles, kAllLeafTriangles, nullptr, &rootOfB, root)) stack[top++] = root;
-  while (top > 0 && !done_) {
-    const Pending p = stack[--top];
-    if (p.lower > bound) {  // the bound fell below this pair's since it was pushed
+  bool have = test(0, 0, 0, kAllLeafTriangles, kAllLeafTriangles, nullptr, &rootOfB, p);
+  while (have && !done_) {
+    if (p.lower > bound) {  // the bound fell below this pair's since it was deferred
       ++counters_.pairsRejectedByBounds;
       dropped();
-      continue;
-    }
-    const MeshHierarchy::Node& na = nodesA[p.a];
-    const MeshHierarchy::Node& nb = nodesB[p.b];
-    if (na.isLeaf() && nb.isLeaf()) {
-      testLeafPair(na, p.maskA, nb, p.maskB, limit, bound);
-      continue;
-    }
-    ++counters_.pairsSplit;
-    const bool splitA = !na.isLeaf() && (nb.isLeaf() || boxSize2(na.box) >= boxSize2(nb.box));
-    Pending children[2];
-    int count = 0;
-    if (splitA) {
-      const OrientedBox boxOfB = placedBox(nb.box, rotationBA_, translationBA_);
-      count += test(na.left, p.b, p.depth + 1, kAllLeafTriangles, p.maskB, nullptr, &boxOfB, children[count]);
-      count += test(na.right, p.b, p.depth + 1, kAllLeafTriangles, p.maskB, nullptr, &boxOfB, children[count]);
+      if (bestFirst) {  // every pair still pending has a lower bound at least as large
+        counters_.pairsRejectedByBounds += pending.size();
+        return;
+      }
     } else {
-      const OrientedBox boxOfA = placedBox(na.box, rotationAB_, translationAB);
-      count += test(p.a, nb.left, p.depth + 1, p.maskA, kAllLeafTriangles, &boxOfA, nullptr, children[count]);
-      count += test(p.a, nb.right, p.depth + 1, p.maskA, kAllLeafTriangles, &boxOfA, nullptr, children[count]);
+      const MeshHierarchy::Node& na = nodesA[p.a];
+      const MeshHierarchy::Node& nb = nodesB[p.b];
+      if (na.isLeaf() && nb.isLeaf()) {
+        testLeafPair(na, p.maskA, nb, p.maskB, limit, bound);
+      } else {
+        ++counters_.pairsSplit;
+        const bool splitA = !na.isLeaf() && (nb.isLeaf() || boxSize2(na.box) >= boxSize2(nb.box));
+        Pending children[2];
+        int count = 0;
+        if (splitA) {
+          const OrientedBox boxOfB = placedBox(nb.box, rotationBA_, translationBA_);
+          count += test(na.left, p.b, p.depth + 1, kAllLeafTriangles, p.maskB, nullptr, &boxOfB, children[count]);
+          count += test(na.right, p.b, p.depth + 1, kAllLeafTriangles, p.maskB, nullptr, &boxOfB, children[count]);
+        } else {
+          const OrientedBox boxOfA = placedBox(na.box, rotationAB_, translationAB);
+          count += test(p.a, nb.left, p.depth + 1, p.maskA, kAllLeafTriangles, &boxOfA, nullptr, children[count]);
+          count += test(p.a, nb.right, p.depth + 1, p.maskA, kAllLeafTriangles, &boxOfA, nullptr, children[count]);
+        }
+        if (count == 2 && takenBefore(children[1], children[0])) std::swap(children[0], children[1]);
+        if (count == 2) defer(children[1]);
+        // Go on with the nearer child at once (depth first always; best first unless a pending
+        // pair comes before it): the order is the same as deferring it too, with one heap
+        // operation less.
+        if (count > 0 && (!bestFirst || pending.empty() || !takenBefore(pending.front(), children[0]))) {
+          p = children[0];
+          continue;
+        }
+        if (count > 0) defer(children[0]);
+      }
     }
-    pushNearestLast(count, children);
+    have = !pending.empty();
+    if (have) p = takeNext();
   }
 }
 
