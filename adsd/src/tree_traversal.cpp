@@ -88,49 +88,44 @@ void Query::traverseTrees() {
   // test (bench_scene_counters, bug trap exact: ~8 % less time); a validity query, which mostly
   // ends at the first pair or proves the boxes apart, refines the larger leaf only.
   const bool refineBothLeaves = options_.mode != QueryMode::threshold;
-  // Tests the pair (a, b). One of the two boxes comes placed in the other mesh's frame: placedB
-  // (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split left whole,
-  // so that both children of a split are tested against one placed box. Returns false when the
-  // pair was dropped, else fills `out`.
+  // Tests the pair (a, b) by its boxes. One of the two comes placed in the other mesh's frame:
+  // placedB (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split
+  // left whole, so that both children of a split are tested against one placed box. Returns
+  // false when the pair was dropped, else fills `out`.
   auto test = [&](std::int32_t a, std::int32_t b, int depth, std::uint32_t maskA, std::uint32_t maskB,
                   const OrientedBox* placedA, const OrientedBox* placedB, Pending& out) {
     ++counters_.subMeshPairs;
     counters_.maxDepth = std::max(counters_.maxDepth, depth);
-    const MeshHierarchy::Node& na = nodesA[a];
-    const MeshHierarchy::Node& nb = nodesB[b];
-    const BoxPairBound boxes =
-        placedB ? boxLowerBound(na.box, *placedB, bound) : boxLowerBound(nb.box, *placedA, bound);
+    const BoxPairBound boxes = placedB ? boxLowerBound(nodesA[a].box, *placedB, bound)
+                                       : boxLowerBound(nodesB[b].box, *placedA, bound);
     if (boxes.lower > bound) {
       ++counters_.pairsRejectedByBounds;
       dropped();
       return false;
     }
-    // A leaf facing a larger node, or the larger of two leaves: its triangles against the other
-    // box (the smaller leaf's own box is tight already, the larger one's may be fat: a floor and a
-    // wall triangle of an environment fill a room corner). Each mesh's triangles are tested in
-    // their own frame, against the other node's box placed there.
+    out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
+    return true;
+  };
+  // When a pair is taken (not when it is first tested: a best-first query drops many pairs
+  // untaken, and the bound may have fallen meanwhile), a leaf facing a larger node, or the larger
+  // of two leaves, has its live triangles tested against the other node's box (the smaller
+  // leaf's own box is tight already, the larger one's may be fat: a floor and a wall triangle of
+  // an environment fill a room corner). Each mesh's triangles are tested in their own frame,
+  // against the other box placed there. Returns false when no triangle of a leaf is left.
+  // Moving this from the test to the taking measured ~10 % less time on the bug trap's exact
+  // queries (bench_scene_counters).
+  auto refineLeaves = [&](Pending& pair, const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb) {
     const bool bothLeaves = na.isLeaf() && nb.isLeaf() && refineBothLeaves;
     const bool refineA = na.isLeaf() && (!nb.isLeaf() || boxSize2(na.box) > boxSize2(nb.box) || bothLeaves);
     const bool refineB = nb.isLeaf() && (!refineA || bothLeaves);
     if (refineA) {
-      const OrientedBox boxOfB = placedB ? *placedB : placedBox(nb.box, rotationBA_, translationBA_);
-      maskA = trianglesNearBox(a_, orderA_, na, maskA, boxOfB, bound);
-      if (maskA == 0) {
-        ++counters_.pairsRejectedByBounds;
-        dropped();
-        return false;
-      }
+      pair.maskA = trianglesNearBox(a_, orderA_, na, pair.maskA, placedBox(nb.box, rotationBA_, translationBA_), bound);
+      if (pair.maskA == 0) return false;
     }
     if (refineB) {
-      const OrientedBox boxOfA = placedA ? *placedA : placedBox(na.box, rotationAB_, translationAB);
-      maskB = trianglesNearBox(b_, orderB_, nb, maskB, boxOfA, bound);
-      if (maskB == 0) {
-        ++counters_.pairsRejectedByBounds;
-        dropped();
-        return false;
-      }
+      pair.maskB = trianglesNearBox(b_, orderB_, nb, pair.maskB, placedBox(na.box, rotationAB_, translationAB), bound);
+      if (pair.maskB == 0) return false;
     }
-    out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
     return true;
   };
 
@@ -173,6 +168,9 @@ void Query::traverseTrees() {
         counters_.pairsRejectedByBounds += pending.size();
         return;
       }
+    } else if (!refineLeaves(p, nodesA[p.a], nodesB[p.b])) {
+      ++counters_.pairsRejectedByBounds;
+      dropped();
     } else {
       const MeshHierarchy::Node& na = nodesA[p.a];
       const MeshHierarchy::Node& nb = nodesB[p.b];
