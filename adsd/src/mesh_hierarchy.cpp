@@ -106,6 +106,17 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
     for (int k = 0; k < 3; ++k) points.push_back(mesh.corner(order_[i], k));
   }
   node.box = principalBox(points);
+  double nearest2 = std::numeric_limits<double>::infinity();
+  for (std::uint32_t i = t0; i < t1; ++i) {
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const double d2 = (mesh.corner(order_[i], static_cast<int>(k)) - node.box.center).squaredNorm();
+      if (d2 < nearest2) {
+        nearest2 = d2;
+        node.repTriangle = order_[i];
+        node.repCorner = k;
+      }
+    }
+  }
   if (t1 - t0 <= kLeafTriangles) {
     node.v0 = static_cast<std::uint32_t>(leafVertices_.size());
     for (std::uint32_t i = t0; i < t1; ++i) {

@@ -33,7 +33,7 @@ struct PendingNodePair {
   int depth;
   std::uint32_t maskA, maskB;
   double lower;
-  double nearness;  // BoxPairBound::nearness: the tie-break among equal lower bounds
+  double nearness;  // how near the pair looks: the order among equal lower bounds (traverseTrees)
 };
 
 struct DistanceScratch::Buffers {

@@ -88,6 +88,15 @@ void Query::traverseTrees() {
   // test (bench_scene_counters, bug trap exact: ~8 % less time); a validity query, which mostly
   // ends at the first pair or proves the boxes apart, refines the larger leaf only.
   const bool refineBothLeaves = options_.mode != QueryMode::threshold;
+  // Queries that lower an upper bound take one from each pair of nodes they test: the distance
+  // between the nodes' representative points (MeshHierarchy::Node). Best first by lower bound
+  // finds the closest triangles late otherwise (office, exact: at the 63rd of 84 pairs taken, with
+  // 30 of 36 triangle tests spent before); the proof of the minimum alone, once it is known, costs
+  // 1/3 of the time (bench_scene_counters, mode known). Ordering equal lower bounds by the mean of
+  // that distance and the boxes' nearness, instead of nearness alone, took office exact from 0.99
+  // to 0.60 of FCL's time and the bug trap from 0.96 to 0.86 in one run. A validity query keeps
+  // nearness alone: it ends at a pair within D, which two representative points seldom are.
+  const bool offerRepresentatives = options_.mode != QueryMode::threshold;
   // Tests the pair (a, b) by its boxes. One of the two comes placed in the other mesh's frame:
   // placedB (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split
   // left whole, so that both children of a split are tested against one placed box. Returns
@@ -103,7 +112,23 @@ void Query::traverseTrees() {
       dropped();
       return false;
     }
-    out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
+    if (!offerRepresentatives) {
+      out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
+      return true;
+    }
+    // The two nodes' representative points: a real distance, so a candidate upper bound, and
+    // with the boxes' nearness the pair's estimate for the order.
+    const MeshHierarchy::Node& na = nodesA[a];
+    const MeshHierarchy::Node& nb = nodesB[b];
+    const Vec3 onA = a_.corner(na.repTriangle, static_cast<int>(na.repCorner));
+    const Vec3 onB = toA(b_.corner(nb.repTriangle, static_cast<int>(nb.repCorner)));
+    const double between = (onA - onB).norm();
+    if (between < best_) {
+      offer(onA, onB, between, na.repTriangle, false, nb.repTriangle, false);
+      limit = pruneBound();
+      bound = limit + roundoff_;
+    }
+    out = Pending{a, b, depth, maskA, maskB, boxes.lower, 0.5 * (between + boxes.nearness)};
     return true;
   };
   // When a pair is taken (not when it is first tested: a best-first query drops many pairs

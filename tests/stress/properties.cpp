@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 #include <sstream>
+#include <string>
 
 #include "adsd/mesh_hierarchy.h"
 #include "adsd/tolerances.h"
@@ -177,6 +178,14 @@ void checkHierarchy(const Mesh& mesh, const std::string& query, std::vector<Fail
   std::size_t worstNode = 0;
   for (std::size_t i = 0; i < tree->nodes().size(); ++i) {
     const MeshHierarchy::Node& node = tree->nodes()[i];
+    // The representative point the traversal offers as an upper bound must be a corner of one of
+    // the node's own triangles, or the bound would not be a distance between the two meshes.
+    const auto first = tree->order().begin() + node.t0, last = tree->order().begin() + node.t1;
+    if (std::find(first, last, node.repTriangle) == last || node.repCorner > 2) {
+      out.push_back({query + ": node's representative point is not on its triangles",
+                     "node " + std::to_string(i) + ": triangle " + std::to_string(node.repTriangle) + " corner " +
+                         std::to_string(node.repCorner)});
+    }
     const OrientedBox& box = node.box;
     const double magnitude =
         std::max(mesh.maxAbsCoordinate(), box.center.cwiseAbs().maxCoeff() + box.half.cwiseAbs().maxCoeff());

@@ -44,6 +44,11 @@ class MeshHierarchy {
     OrientedBox box;
     std::uint32_t t0 = 0, t1 = 0; ///< triangles order()[t0, t1)
     std::uint32_t v0 = 0, v1 = 0; ///< leaves: distinct vertices leafVertices()[v0, v1)
+    /// A point of the node's own surface, corner `repCorner` of triangle `repTriangle` (the
+    /// corner nearest the box centre): two nodes' points are a real distance between the meshes,
+    /// the traversal's cheap upper bound and ordering estimate for a node pair (sec. 4's upper
+    /// bound from support points, taken from the tree instead of GJK).
+    std::uint32_t repTriangle = 0, repCorner = 0;
     std::int32_t left = -1, right = -1;  ///< children, -1 for a leaf
     bool isLeaf() const { return left < 0; }
   };
