@@ -4,6 +4,7 @@
 
 #include <istream>
 #include <map>
+#include <string>
 #include <ostream>
 #include <system_error>
 #include <utility>
@@ -20,6 +21,16 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace ot = ompl::tools;
+
+/// The OMPL version for the log's first line. Debian's OMPL 1.5.2 defines OMPL_VERSION as "" (its
+/// config.h was generated without it), so its own logs say "OMPL version " and Planner Arena, which
+/// groups runs by version, shows none; the numeric macros beside it are right and spell it then.
+std::string omplVersion() {
+  const std::string declared = OMPL_VERSION;
+  if (!declared.empty()) return declared;
+  return std::to_string(OMPL_MAJOR_VERSION) + '.' + std::to_string(OMPL_MINOR_VERSION) + '.' +
+         std::to_string(OMPL_PATCH_VERSION);
+}
 
 // A spool holds records; a record is its length(s) on one line, then its bytes and a newline. The
 // lengths make a record safe whatever its text holds, and let the reader check every record is
@@ -122,11 +133,11 @@ void SpooledBenchmarkLog::append(std::size_t firstPlanner, const ot::Benchmark::
 
 // The layout below is OMPL 1.5's Benchmark::saveResultsToStream, line for line (the log must read
 // back through ompl_benchmark_statistics exactly as a log OMPL wrote), with the runs streamed from
-// the spools instead of read from memory.
+// the spools instead of read from memory, and the version spelled out where OMPL's is empty.
 void SpooledBenchmarkLog::write(const ot::Benchmark::CompleteExperiment& header) {
   std::ofstream out(temporaryPath_, std::ios::trunc);
   if (!out) throw InputError("cannot write '" + logPath_.string() + "'");
-  out << "OMPL version " << OMPL_VERSION << '\n';
+  out << "OMPL version " << omplVersion() << '\n';
   out << "Experiment " << (header.name.empty() ? "NO_NAME" : header.name) << '\n';
   out << header.parameters.size() << " experiment properties\n";
   for (const auto& [key, value] : header.parameters) out << key << " = " << value << '\n';
