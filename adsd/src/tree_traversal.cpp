@@ -89,13 +89,15 @@ void Query::traverseTrees() {
   // ends at the first pair or proves the boxes apart, refines the larger leaf only.
   const bool refineBothLeaves = options_.mode != QueryMode::threshold;
   // Queries that lower an upper bound take one from each pair of nodes they test: the distance
-  // between the nodes' representative points (MeshHierarchy::Node). Best first by lower bound
-  // finds the closest triangles late otherwise (office, exact: at the 63rd of 84 pairs taken, with
-  // 30 of 36 triangle tests spent before); the proof of the minimum alone, once it is known, costs
-  // 1/3 of the time (bench_scene_counters, mode known). Ordering equal lower bounds by the mean of
-  // that distance and the boxes' nearness, instead of nearness alone, took office exact from 0.99
-  // to 0.60 of FCL's time and the bug trap from 0.96 to 0.86 in one run. A validity query keeps
-  // nearness alone: it ends at a pair within D, which two representative points seldom are.
+  // between the nodes' representative points (MeshHierarchy::Node). Without it, best first by
+  // lower bound found the closest triangles late (office, exact: at the 63rd of 84 pairs taken,
+  // with 30 of 36 triangle tests spent before), while the proof of the minimum alone, told the
+  // answer, cost 1/3 of the time (bench_scene_counters, mode known: 13.6 against 43 us). Ordering
+  // equal lower bounds by the mean of that distance and the boxes' nearness, instead of nearness
+  // alone, took office exact from 0.99 to 0.60 of FCL's time and the bug trap from 0.96 to 0.86
+  // in one run. A validity query keeps nearness alone and offers no such points: it ends at a
+  // pair within D, which two representative points seldom are (at D = 1 % of the robot, offering
+  // them made bench_scene_counters' threshold queries 5-10 % slower).
   const bool offerRepresentatives = options_.mode != QueryMode::threshold;
   // Tests the pair (a, b) by its boxes. One of the two comes placed in the other mesh's frame:
   // placedB (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split
@@ -158,10 +160,10 @@ void Query::traverseTrees() {
   // nearness alone (BoxPairBound): it mostly ends at the first triangle pair within D, or else
   // must visit every pair its boxes cannot drop, in any order. Queries that lower an upper bound
   // go best first: always the pending pair of smallest lower bound, ties (common among
-  // overlapping boxes, whose bound is 0) by nearness. Depth first had found the final upper bound
-  // late: on bench_scene_counters' bug trap, exact queries then took 266 node pairs and 102
-  // triangle tests, against 120 and 6 when started from the final distance; best first took 181
-  // and 29, and on the alpha puzzle 907 node pairs instead of 2 276.
+  // overlapping boxes, whose bound is 0) by the estimate `test` gives. Depth first had found the
+  // final upper bound late: on bench_scene_counters' bug trap, exact queries then took 266 node
+  // pairs and 102 triangle tests, against 120 and 6 when started from the final distance; best
+  // first took 181 and 29, and on the alpha puzzle 907 node pairs instead of 2 276.
   const bool bestFirst = options_.mode != QueryMode::threshold;
   auto takenBefore = [bestFirst](const Pending& x, const Pending& y) {
     if (!bestFirst) return x.nearness < y.nearness;
