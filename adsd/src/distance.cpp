@@ -177,7 +177,10 @@ void Query::offer(const Vec3& onA, const Vec3& onB, double d, std::int64_t featu
   bestFeatureB_ = featureB;
   bestVertexA_ = vertexA;
   bestVertexB_ = vertexB;
-  if (options_.mode == QueryMode::threshold && best_ <= options_.threshold) done_ = true;
+  // Settled: a validity query proven within its threshold, or any query at distance 0 (no pair
+  // can be nearer; without this, exact queries between intersecting meshes went on through every
+  // pair of overlapping boxes).
+  if (best_ <= 0.0 || (options_.mode == QueryMode::threshold && best_ <= options_.threshold)) done_ = true;
 }
 
 void Query::offer(const PointPair& pair) {

@@ -155,7 +155,7 @@ class Query {
   bool bestVertexA_ = false, bestVertexB_ = false;
   // Smallest lower bound of any pair dropped by the mode's rules (tolerance, threshold, cap).
   double minSkippedLower_ = std::numeric_limits<double>::infinity();
-  bool done_ = false;  // threshold mode: proven within the threshold
+  bool done_ = false;  // the answer is settled (offer): within a validity query's threshold, or 0
   DistanceCounters counters_;
 };
 

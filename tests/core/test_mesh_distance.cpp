@@ -353,6 +353,34 @@ TEST_F(MeshDistanceAgainstOracle, KnottedTubeAndStickWithTrees) { expectExercise
 TEST_F(MeshDistanceAgainstOracle, HookedCShapesWithTrees) { expectExercised(run(withTrees(hookedCShapes()), 303), false); }
 TEST_F(MeshDistanceAgainstOracle, ObjectInARoomWithTrees) { expectExercised(run(withTrees(objectInRoom()), 304), false); }
 
+/// Meshes that intersect have distance 0, and no pair can be nearer: every query mode settles
+/// there instead of going on through every pair of overlapping sub-meshes. Two copies of one
+/// torus in the same place overlap everywhere: thousands of triangle pairs intersect.
+TEST(MeshDistance, IntersectingMeshesSettleAtZero) {
+  for (const bool trees : {false, true}) {
+    Mesh a = shapes::torus(1.0, 0.44, 40, 14);
+    Mesh b = a;
+    if (trees) {
+      a.buildHierarchy();
+      b.buildHierarchy();
+    }
+    const Pose turned(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()));
+    for (const DistanceOptions& options :
+         {DistanceOptions::exactDistance(), DistanceOptions::withTolerance(0.0, 0.01), DistanceOptions::cappedAt(1.0)}) {
+      SCOPED_TRACE(std::string(trees ? "trees" : "from scratch") + ", mode " +
+                   std::to_string(static_cast<int>(options.mode)));
+      const DistanceResult r = distance(a, turned, b, turned, options);
+      EXPECT_EQ(r.distance, 0.0);
+      EXPECT_EQ(r.lower, 0.0);
+      EXPECT_EQ(r.upper, 0.0);
+      EXPECT_EQ(r.status, DistanceStatus::exact);
+      // Settled at the first intersecting pair: a few leaves' worth of triangle pairs, not the
+      // thousands that intersect.
+      EXPECT_LE(r.counters.trianglePairsTested, 64u) << "triangles per mesh " << a.triangleCount();
+    }
+  }
+}
+
 TEST(MeshDistance, BadOptionsAndPosesAreInputErrors) {
   const Mesh box = shapes::box(Vec3(1, 1, 1));
   const Pose apart(Eigen::Translation3d(3, 0, 0));
