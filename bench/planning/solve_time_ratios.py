@@ -24,7 +24,8 @@ a first exact solution, the question a validity checker's speed answers.
 
 Prints (and writes to OUT/solve_times.md) one Markdown row per problem and planner: runs, exact
 solutions found before the time limit, median solve time with each checker (a run without one counts
-as the time limit, as OMPL records it), and ours ÷ FCL. When half or more of a checker's runs found no exact
+as the time limit, as OMPL records it), ours ÷ FCL, and the two checkers' time per validity check
+over all runs (from the runs' validity check counters), ours ÷ FCL. When half or more of a checker's runs found no exact
 solution, its median is the time limit, not a solve time, and the ratio is marked "censored".
 Exit status: 0; 1 when adsd benchmark fails; 2 on bad usage.
 """
@@ -87,7 +88,8 @@ def read_runs(database):
     connection = sqlite3.connect("file:%s?mode=ro" % database, uri=True)
     try:
         return connection.execute(
-            "SELECT plannerConfigs.name, runs.time, runs.solved, runs.approximate_solution FROM runs "
+            "SELECT plannerConfigs.name, runs.time, runs.solved, runs.approximate_solution, "
+            "runs.validity_checks, runs.validity_check_time FROM runs "
             "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id ORDER BY runs.id").fetchall()
     finally:
         connection.close()
@@ -96,7 +98,7 @@ def read_runs(database):
 def rows_for(problem, runs, seconds):
     """One row per planner: (problem, planner, runs, exact solutions per checker, medians, ratio)."""
     groups = {}
-    for name, elapsed, solved, approximate in runs:
+    for name, elapsed, solved, approximate, checks, check_time in runs:
         m = COMBINATION.match(name)
         if not m:
             continue
@@ -104,7 +106,7 @@ def rows_for(problem, runs, seconds):
         # stopped it, after as long as an unsolved run took).
         exact = bool(solved) and not bool(approximate) and elapsed < seconds
         groups.setdefault(m.group("label"), {}).setdefault(m.group("checker"), []).append(
-            (elapsed if exact else max(elapsed, seconds), exact))
+            (elapsed if exact else max(elapsed, seconds), exact, checks or 0, check_time or 0.0))
     rows = []
     for label, by_checker in groups.items():
         ours, fcl = by_checker.get("adsd", []), by_checker.get("fcl", [])
@@ -112,14 +114,19 @@ def rows_for(problem, runs, seconds):
             continue
 
         def median_time(rs):
-            return statistics.median(t for t, _ in rs)
+            return statistics.median(r[0] for r in rs)
 
         def censored(rs):
-            return 2 * sum(1 for _, exact in rs if exact) <= len(rs)
+            return 2 * sum(1 for r in rs if r[1]) <= len(rs)
+
+        def time_per_check(rs):
+            checks = sum(r[2] for r in rs)
+            return sum(r[3] for r in rs) / checks if checks else float("nan")
 
         ratio = median_time(ours) / median_time(fcl)
-        rows.append((problem, label, len(ours), sum(e for _, e in ours), sum(e for _, e in fcl),
-                     median_time(ours), median_time(fcl), ratio, censored(ours) or censored(fcl)))
+        rows.append((problem, label, len(ours), sum(r[1] for r in ours), sum(r[1] for r in fcl),
+                     median_time(ours), median_time(fcl), ratio, censored(ours) or censored(fcl),
+                     time_per_check(ours) / time_per_check(fcl)))
     return rows
 
 
@@ -128,14 +135,16 @@ def table(rows, command):
              "counts as the limit); planners stop at their first solution; discrete motion validator. Run r is one "
              "`adsd benchmark --runs 1 --seed SEED+r` per checker, the two back to back (common random numbers: "
              "RRTConnect then draws the same samples with either checker; PRM's two threads make its runs differ "
-             "anyway)." % command, "",
+             "anyway). Last column: the checkers' own time per validity check over all runs (the runs' `validity "
+             "check time` ÷ `validity checks`), ours ÷ FCL's: what the checker controls, without the planner's "
+             "own work and the spread of solve times." % command, "",
              "| problem | planner | runs | solved in time, ours | solved in time, FCL | median s, ours | "
-             "median s, FCL | ours ÷ FCL |",
-             "|---|---|---:|---:|---:|---:|---:|---:|"]
-    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, censored in rows:
-        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s |" % (
+             "median s, FCL | ours ÷ FCL | per check, ours ÷ FCL |",
+             "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, censored, per_check in rows:
+        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s | %.3g |" % (
             problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t,
-            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio))
+            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, per_check))
     lines += ["", "Target (issue 6): ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
     return "\n".join(lines) + "\n"
 
