@@ -122,10 +122,11 @@ int main(int argc, char** argv) {
         adsd::DistanceScratch scratch;
         // Mode known: each pose's cap, just above its exact distance (and positive, as a cap must be).
         std::vector<adsd::DistanceOptions> capped;
-        for (const adsd::bench::PosePair& p : scene.poses) {
-          if (!known) break;
-          const double exact = adsd::distance(scene.a, p.a, scene.b, p.b, options, scratch).distance;
-          capped.push_back(adsd::DistanceOptions::cappedAt(exact * (1.0 + 1e-9) + 1e-12 * scene.referenceLength));
+        if (known) {
+          for (const adsd::bench::PosePair& p : scene.poses) {
+            const double exact = adsd::distance(scene.a, p.a, scene.b, p.b, options, scratch).distance;
+            capped.push_back(adsd::DistanceOptions::cappedAt(exact * (1.0 + 1e-9) + 1e-12 * scene.referenceLength));
+          }
         }
         std::vector<double> ours, theirs;
         adsd::DistanceCounters total;

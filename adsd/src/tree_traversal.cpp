@@ -83,11 +83,11 @@ void Query::traverseTrees() {
 
   using Pending = PendingNodePair;
   const Vec3 translationAB = -(rotationAB_ * translationBA_);  // A's frame -> B's frame
-  // Two leaves meeting: queries that lower an upper bound refine both leaves' triangles against
-  // the other's box, since every triangle pair left costs an 11-axis filter and often an exact
-  // test (bench_scene_counters, bug trap exact: ~8 % less time); a validity query, which mostly
-  // ends at the first pair or proves the boxes apart, refines the larger leaf only.
-  const bool refineBothLeaves = options_.mode != QueryMode::threshold;
+  // A validity (threshold) query ends at the first pair within D; the other modes lower an upper
+  // bound until it is proven. The traversal treats the two differently in three places, each
+  // explained where it is used: how leaves meet (refineLeaves), whether representative points
+  // are offered (test), and the order pairs are taken in.
+  const bool lowersUpperBound = options_.mode != QueryMode::threshold;
   // Queries that lower an upper bound take one from each pair of nodes they test: the distance
   // between the nodes' representative points (MeshHierarchy::Node). Without it, best first by
   // lower bound found the closest triangles late (office, exact: at the 63rd of 84 pairs taken,
@@ -98,7 +98,6 @@ void Query::traverseTrees() {
   // in one run. A validity query keeps nearness alone and offers no such points: it ends at a
   // pair within D, which two representative points seldom are (at D = 1 % of the robot, offering
   // them made bench_scene_counters' threshold queries 5-10 % slower).
-  const bool offerRepresentatives = options_.mode != QueryMode::threshold;
   // Tests the pair (a, b) by its boxes. One of the two comes placed in the other mesh's frame:
   // placedB (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split
   // left whole, so that both children of a split are tested against one placed box. Returns
@@ -114,7 +113,7 @@ void Query::traverseTrees() {
       dropped();
       return false;
     }
-    if (!offerRepresentatives) {
+    if (!lowersUpperBound) {
       out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
       return true;
     }
@@ -142,7 +141,11 @@ void Query::traverseTrees() {
   // Moving this from the test to the taking measured ~10 % less time on the bug trap's exact
   // queries (bench_scene_counters).
   auto refineLeaves = [&](Pending& pair, const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb) {
-    const bool bothLeaves = na.isLeaf() && nb.isLeaf() && refineBothLeaves;
+    // Two leaves meeting: queries that lower an upper bound refine both leaves' triangles against
+    // the other's box, since every triangle pair left costs an 11-axis filter and often an exact
+    // test (bench_scene_counters, bug trap exact: ~8 % less time); a validity query, which mostly
+    // ends at the first pair or proves the boxes apart, refines the larger leaf only.
+    const bool bothLeaves = na.isLeaf() && nb.isLeaf() && lowersUpperBound;
     const bool refineA = na.isLeaf() && (!nb.isLeaf() || boxSize2(na.box) > boxSize2(nb.box) || bothLeaves);
     const bool refineB = nb.isLeaf() && (!refineA || bothLeaves);
     if (refineA) {
@@ -164,9 +167,8 @@ void Query::traverseTrees() {
   // final upper bound late: on bench_scene_counters' bug trap, exact queries then took 266 node
   // pairs and 102 triangle tests, against 120 and 6 when started from the final distance; best
   // first took 181 and 29, and on the alpha puzzle 907 node pairs instead of 2 276.
-  const bool bestFirst = options_.mode != QueryMode::threshold;
-  auto takenBefore = [bestFirst](const Pending& x, const Pending& y) {
-    if (!bestFirst) return x.nearness < y.nearness;
+  auto takenBefore = [lowersUpperBound](const Pending& x, const Pending& y) {
+    if (!lowersUpperBound) return x.nearness < y.nearness;
     return x.lower < y.lower || (x.lower == y.lower && x.nearness < y.nearness);
   };
   // A heap whose front is the pair to take next (best first), or a stack (depth first).
@@ -175,10 +177,10 @@ void Query::traverseTrees() {
   auto later = [&](const Pending& x, const Pending& y) { return takenBefore(y, x); };
   auto defer = [&](const Pending& pair) {
     pending.push_back(pair);
-    if (bestFirst) std::push_heap(pending.begin(), pending.end(), later);
+    if (lowersUpperBound) std::push_heap(pending.begin(), pending.end(), later);
   };
   auto takeNext = [&] {
-    if (bestFirst) std::pop_heap(pending.begin(), pending.end(), later);
+    if (lowersUpperBound) std::pop_heap(pending.begin(), pending.end(), later);
     const Pending next = pending.back();
     pending.pop_back();
     return next;
@@ -191,7 +193,7 @@ void Query::traverseTrees() {
     if (p.lower > bound) {  // the bound fell below this pair's since it was deferred
       ++counters_.pairsRejectedByBounds;
       dropped();
-      if (bestFirst) {  // every pair still pending has a lower bound at least as large
+      if (lowersUpperBound) {  // every pair still pending has a lower bound at least as large
         counters_.pairsRejectedByBounds += pending.size();
         return;
       }
@@ -222,7 +224,7 @@ void Query::traverseTrees() {
         // Go on with the nearer child at once (depth first always; best first unless a pending
         // pair comes before it): the order is the same as deferring it too, with one heap
         // operation less.
-        if (count > 0 && (!bestFirst || pending.empty() || !takenBefore(pending.front(), children[0]))) {
+        if (count > 0 && (!lowersUpperBound || pending.empty() || !takenBefore(pending.front(), children[0]))) {
           p = children[0];
           continue;
         }
