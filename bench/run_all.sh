@@ -126,8 +126,11 @@ elif [[ -d bench/results ]]; then
   cp bench/results/planning_solve_times*.md "$staging/" 2>/dev/null || true
 fi
 # The stress tables are the numerics suite's (tests/stress: the soak and a run of the current core),
-# pasted by its owner; keep them.
-for kept in bench/results/stress*.txt; do [[ -f "$kept" ]] && cp "$kept" "$staging/"; done
+# pasted by its owner, and prm_thin_wall_repeat*.md two repeats of one planning command that the
+# README quotes (how far PRM's rows swing); keep them.
+for kept in bench/results/stress*.txt bench/results/prm_thin_wall_repeat*.md; do
+  [[ -f "$kept" ]] && cp "$kept" "$staging/"
+done
 echo "=== total: $((SECONDS - started)) s" >>"$log"
 
 rm -rf bench/results.old
