@@ -20,8 +20,12 @@
 #   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_hard.md
 #                         bench/planning/solve_time_ratios.py: issue 6's end-to-end row (RRTConnect
 #                         and PRM, median solve time with our checker and FCL's, interleaved)
+#   planning_control.md, planning_control_hard.md
+#                         the same with FCL's checker in both places (--control fcl): how far
+#                         those rows move when nothing differs
 #   run_all.log           what each step printed on stderr, and its time
-# then bench/update_readme.py pastes them into README.md's blocks `speed` and `planning`.
+# then bench/update_readme.py pastes them into README.md's blocks `speed`, `planning` and
+# `planning_control`.
 # Each step writes into a temporary directory that replaces bench/results only when every step
 # succeeded, so a failed run leaves the last good results and the README as they were.
 # Exit status: the first failing step's (bench_scenes: 3 when an answer disagrees with the oracle).
@@ -35,7 +39,7 @@ while [[ $# -gt 0 ]]; do
     --no-planning) planning=0 ;;
     --paste-only) paste_only=1 ;;
     --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
-    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,30p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
@@ -51,12 +55,19 @@ paste_readme() {
     "$build/bench/bench_scene_counters --repeat 20 (work per query on the planning problems)" bench/results/scene_counters.txt
   if [[ -f bench/results/planning_solve_times.md ]]; then
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 20 --time 5 --only office,thin_wall" \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall" \
       bench/results/planning_solve_times.md \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 10 --time 5 --only maze" \
       bench/results/planning_solve_times_maze.md \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 20 --time 10 --only bug_trap,twisted_passage" \
       bench/results/planning_solve_times_hard.md
+  fi
+  if [[ -f bench/results/planning_control.md ]]; then
+    /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall --control fcl" \
+      bench/results/planning_control.md \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 20 --time 10 --only bug_trap,twisted_passage --control fcl" \
+      bench/results/planning_control_hard.md
   fi
 }
 if [[ $paste_only -eq 1 ]]; then
@@ -104,26 +115,37 @@ sed -i "s#$staging/#bench/results/#g; s#--out $staging#--out bench/results#" "$s
 step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
 step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
 if [[ $planning -eq 1 ]]; then
-  # Twenty runs per problem, planner and checker: solve times spread over a factor of a hundred
-  # between seeds, and with five or ten runs the median was one pair's ratio (the bug trap's
-  # RRTConnect row read 0.88 in one run of this script and 1.11 in the next, with the same core).
+  # Twenty runs per problem, planner and checker (forty where runs take milliseconds): solve times
+  # spread over a factor of a hundred between seeds, and with five or ten runs the median was one
+  # pair's ratio (the bug trap's RRTConnect row read 0.88 in one run of this script and 1.11 in the
+  # next, with the same core).
   # The maze gets ten: its PRM row is censored (neither checker solves it within 5 s) and costs
   # the time limit per run. The cow doorway and the alpha puzzle are left out: RRTConnect and PRM
   # rarely solve them within a minute with either checker (problems/README.md), so their medians
   # would be the time limit, not a solve time.
   planning_work=$staging/planning
   step planning /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/fast" --runs 20 --time 5 --only office,thin_wall
+    --problems "$build/problem_files" --out "$planning_work/fast" --runs 40 --time 5 --only office,thin_wall
   step planning_maze /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
     --problems "$build/problem_files" --out "$planning_work/maze" --runs 10 --time 5 --only maze
   step planning_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
     --problems "$build/problem_files" --out "$planning_work/hard" --runs 20 --time 10 --only bug_trap,twisted_passage
+  # The control: FCL's checker against itself, same commands. Its ratios should be 1; how far they
+  # are not, with their intervals, is the noise the rows above must be read against.
+  step planning_control /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
+    --problems "$build/problem_files" --out "$planning_work/control" --runs 40 --time 5 --only office,thin_wall \
+    --control fcl
+  step planning_control_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
+    --problems "$build/problem_files" --out "$planning_work/control_hard" --runs 20 --time 10 \
+    --only bug_trap,twisted_passage --control fcl
+  cp "$planning_work/control/solve_times.md" "$staging/planning_control.md"
+  cp "$planning_work/control_hard/solve_times.md" "$staging/planning_control_hard.md"
   cp "$planning_work/fast/solve_times.md" "$staging/planning_solve_times.md"
   cp "$planning_work/maze/solve_times.md" "$staging/planning_solve_times_maze.md"
   cp "$planning_work/hard/solve_times.md" "$staging/planning_solve_times_hard.md"
   rm -rf "$planning_work"
 elif [[ -d bench/results ]]; then
-  cp bench/results/planning_solve_times*.md "$staging/" 2>/dev/null || true
+  cp bench/results/planning_*.md "$staging/" 2>/dev/null || true
 fi
 # The stress tables are the numerics suite's (tests/stress: the soak and a run of the current core),
 # pasted by its owner, and prm_thin_wall_repeat*.md two repeats of one planning command that the

@@ -4,6 +4,7 @@ per shipped problem, measured by `adsd benchmark`, the two checkers' runs paired
 
 usage: solve_time_ratios.py --adsd PROGRAM --problems DIR [--out DIR] [--runs N] [--time SECONDS]
                             [--planners rrtconnect,prm] [--only office,maze,...] [--seed S]
+                            [--control adsd|fcl]
 
 For every PROBLEM.cfg in --problems (the build's problem_files directory: the shipped .cfg files
 next to the meshes the build generated), writes OUT/cfgs/PROBLEM.cfg: the file's [problem]
@@ -11,7 +12,7 @@ section with absolute mesh paths and `objective.threshold` so high that any path
 [benchmark] section (--time, one run, no simplification) and a [planner] section listing
 --planners. Then, for each run r and each checker C (the order alternating run by run), runs
   adsd benchmark OUT/cfgs/PROBLEM.cfg --checker C --motion discrete --runs 1 --seed SEED+r
-                 --out OUT/PROBLEM/C-r --no-plots
+                 --out OUT/PROBLEM/placeP-C-r --no-plots
 and reads the database ompl_benchmark_statistics wrote there. Both checkers' run r start from one
 seed (common random numbers), so a single-threaded planner such as RRTConnect draws the same
 samples with either, and the pair's times differ by the checking alone: far less noise than
@@ -27,10 +28,17 @@ solutions found before the time limit, median solve time with each checker (a ru
 as the time limit, as OMPL records it), ours ÷ FCL, and the two checkers' time per validity check
 over all runs (from the runs' validity check counters), ours ÷ FCL. When half or more of a checker's runs found no exact
 solution, its median is the time limit, not a solve time, and the ratio is marked "censored".
+Each ratio of medians comes with a 95 % interval: a percentile bootstrap that resamples the run
+pairs (both checkers' run r together, as they share a seed), 2000 resamples from a fixed seed.
+
+--control C runs checker C in both places of every pair (an A/A test): the same command and timing
+with nothing to tell apart, so its ratios and intervals show how far this benchmark's rows move on
+their own, which a real difference must exceed.
 Exit status: 0; 1 when adsd benchmark fails; 2 on bad usage.
 """
 import argparse
 import os
+import random
 import re
 import sqlite3
 import statistics
@@ -95,23 +103,40 @@ def read_runs(database):
         connection.close()
 
 
+def bootstrap_interval(first, second, resamples=2000):
+    """95 % percentile-bootstrap interval of median(first) / median(second), resampling the pairs
+    (first[i], second[i]) together. The generator's seed is fixed, so one set of runs always gives
+    the same interval."""
+    generator = random.Random(20261122)
+    n = len(first)
+    ratios = []
+    for _ in range(resamples):
+        picked = [generator.randrange(n) for _ in range(n)]
+        ratios.append(statistics.median(first[i] for i in picked) / statistics.median(second[i] for i in picked))
+    ratios.sort()
+    return ratios[int(0.025 * resamples)], ratios[int(0.975 * resamples) - 1]
+
+
 def rows_for(problem, runs, seconds):
-    """One row per planner: (problem, planner, runs, exact solutions per checker, medians, ratio)."""
+    """One row per planner: (problem, planner, runs, exact solutions per place, medians, ratio, its
+    interval, censored, per-check ratio). RUNS: (place, r, database row), place 0 for the checker
+    under test (ours) and 1 for the reference (FCL's)."""
     groups = {}
-    for name, elapsed, solved, approximate, checks, check_time in runs:
+    for place, r, (name, elapsed, solved, approximate, checks, check_time) in runs:
         m = COMBINATION.match(name)
         if not m:
             continue
         # Solved: an exact solution before the time limit (PRM can report one found as the limit
         # stopped it, after as long as an unsolved run took).
         exact = bool(solved) and not bool(approximate) and elapsed < seconds
-        groups.setdefault(m.group("label"), {}).setdefault(m.group("checker"), []).append(
-            (elapsed if exact else max(elapsed, seconds), exact, checks or 0, check_time or 0.0))
+        groups.setdefault(m.group("label"), ({}, {}))[place][r] = (
+            elapsed if exact else max(elapsed, seconds), exact, checks or 0, check_time or 0.0)
     rows = []
-    for label, by_checker in groups.items():
-        ours, fcl = by_checker.get("adsd", []), by_checker.get("fcl", [])
-        if not ours or not fcl:
+    for label, (tested, reference) in groups.items():
+        paired = sorted(set(tested) & set(reference))
+        if not paired:
             continue
+        ours, fcl = [tested[r] for r in paired], [reference[r] for r in paired]
 
         def median_time(rs):
             return statistics.median(r[0] for r in rs)
@@ -124,28 +149,38 @@ def rows_for(problem, runs, seconds):
             return sum(r[3] for r in rs) / checks if checks else float("nan")
 
         ratio = median_time(ours) / median_time(fcl)
+        low, high = bootstrap_interval([r[0] for r in ours], [r[0] for r in fcl])
         rows.append((problem, label, len(ours), sum(r[1] for r in ours), sum(r[1] for r in fcl),
-                     median_time(ours), median_time(fcl), ratio, censored(ours) or censored(fcl),
+                     median_time(ours), median_time(fcl), ratio, (low, high), censored(ours) or censored(fcl),
                      time_per_check(ours) / time_per_check(fcl)))
     return rows
 
 
-def table(rows, command):
-    lines = ["Command: `%s`. Median solve time over the runs (a run without an exact solution before the time limit "
-             "counts as the limit); planners stop at their first solution; discrete motion validator. Run r is one "
-             "`adsd benchmark --runs 1 --seed SEED+r` per checker, the two back to back (common random numbers: "
+def table(rows, command, control):
+    if control:
+        names = ("%s (A)" % control, "%s (B)" % control)
+        about = ("Control (A/A): checker `%s` in both places of every pair, so the two columns differ by timing "
+                 "alone; a ratio away from 1 here is how far this benchmark moves on its own. " % control)
+    else:
+        names = ("ours", "FCL")
+        about = ""
+    lines = [about + "Command: `%s`. Median solve time over the runs (a run without an exact solution before the time "
+             "limit counts as the limit); planners stop at their first solution; discrete motion validator. Run r is "
+             "one `adsd benchmark --runs 1 --seed SEED+r` per checker, the two back to back (common random numbers: "
              "RRTConnect then draws the same samples with either checker; PRM's two threads make its runs differ "
-             "anyway). Last column: the checkers' own time per validity check over all runs (the runs' `validity "
-             "check time` ÷ `validity checks`), ours ÷ FCL's: what the checker controls, without the planner's "
-             "own work and the spread of solve times." % command, "",
-             "| problem | planner | runs | solved in time, ours | solved in time, FCL | median s, ours | "
-             "median s, FCL | ours ÷ FCL | per check, ours ÷ FCL |",
-             "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, censored, per_check in rows:
-        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s | %.3g |" % (
+             "anyway). 95 %% interval: percentile bootstrap of the ratio over the run pairs. Last column: the "
+             "checkers' own time per validity check over all runs (the runs' `validity check time` ÷ `validity "
+             "checks`), %s ÷ %s: what the checker controls, without the planner's own work and the spread of solve "
+             "times." % (command, names[0], names[1]), "",
+             "| problem | planner | runs | solved in time, {0} | solved in time, {1} | median s, {0} | "
+             "median s, {1} | {0} ÷ {1} | 95 % interval | per check, {0} ÷ {1} |".format(*names),
+             "|---|---|---:|---:|---:|---:|---:|---:|---|---:|"]
+    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, (low, high), censored, per_check in rows:
+        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s | %.3g–%.3g | %.3g |" % (
             problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t,
-            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, per_check))
-    lines += ["", "Target (issue 6): ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
+            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, low, high, per_check))
+    if not control:
+        lines += ["", "Target (issue 6): ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
     return "\n".join(lines) + "\n"
 
 
@@ -159,6 +194,8 @@ def main():
     parser.add_argument("--planners", default="rrtconnect,prm", help="planners (default rrtconnect,prm)")
     parser.add_argument("--only", help="comma-separated problem names (default: every .cfg in --problems)")
     parser.add_argument("--seed", type=int, default=1, help="seed of run 0; run r uses seed + r (default 1)")
+    parser.add_argument("--control", choices=("adsd", "fcl"),
+                        help="run this checker in both places of every pair (an A/A test of the benchmark's noise)")
     args = parser.parse_args()
     if args.runs < 1 or not args.time > 0:
         parser.error("--runs and --time must be positive")
@@ -189,22 +226,24 @@ def main():
             # checker (their answers agree, tests/planner), and the two times differ by the
             # checking alone. The order alternates so that neither checker always runs first.
             seed = args.seed + r
-            checkers = ("adsd", "fcl") if r % 2 == 0 else ("fcl", "adsd")
-            for checker in checkers:
-                out_dir = os.path.join(args.out, problem, "%s-%d" % (checker, r))
+            places = (0, 1) if r % 2 == 0 else (1, 0)
+            for place in places:
+                checker = args.control or ("adsd", "fcl")[place]
+                out_dir = os.path.join(args.out, problem, "place%d-%s-%d" % (place, checker, r))
                 command = [args.adsd, "benchmark", cfg, "--checker", checker, "--motion", "discrete",
                            "--runs", "1", "--seed", str(seed), "--out", out_dir, "--no-plots"]
                 result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
                 if result.returncode != 0:
                     sys.stderr.write(result.stderr)
                     sys.exit("solve_time_ratios.py: %s failed (exit %d)" % (" ".join(command), result.returncode))
-                runs += read_runs(os.path.join(out_dir, "%s.seed-%d.db" % (problem, seed)))
+                runs += [(place, r, row) for row in read_runs(os.path.join(out_dir, "%s.seed-%d.db" % (problem, seed)))]
         rows += rows_for(problem, runs, args.time)
         print("solve_time_ratios.py: %s done in %.0f s" % (problem, time.monotonic() - started), file=sys.stderr)
 
-    command = "bench/planning/solve_time_ratios.py --runs %d --time %g --planners %s --seed %d%s" % (
-        args.runs, args.time, args.planners, args.seed, (" --only " + args.only) if args.only else "")
-    text = table(rows, command)
+    command = "bench/planning/solve_time_ratios.py --runs %d --time %g --planners %s --seed %d%s%s" % (
+        args.runs, args.time, args.planners, args.seed, (" --only " + args.only) if args.only else "",
+        (" --control " + args.control) if args.control else "")
+    text = table(rows, command, args.control)
     with open(os.path.join(args.out, "solve_times.md.tmp"), "w") as f:
         f.write("<!-- generated by bench/planning/solve_time_ratios.py; do not edit -->\n" + text)
     os.replace(os.path.join(args.out, "solve_times.md.tmp"), os.path.join(args.out, "solve_times.md"))
