@@ -150,9 +150,12 @@ def rows_for(problem, runs, seconds):
 
         ratio = median_time(ours) / median_time(fcl)
         low, high = bootstrap_interval([r[0] for r in ours], [r[0] for r in fcl])
+        # What share of the reference's solve time its checks took (both summed over the runs):
+        # a checker k times as fast per check can save at most that share times 1 - k.
+        checking_share = sum(r[3] for r in fcl) / sum(r[0] for r in fcl)
         rows.append((problem, label, len(ours), sum(r[1] for r in ours), sum(r[1] for r in fcl),
                      median_time(ours), median_time(fcl), ratio, (low, high), censored(ours) or censored(fcl),
-                     time_per_check(ours) / time_per_check(fcl)))
+                     time_per_check(ours) / time_per_check(fcl), checking_share))
     return rows
 
 
@@ -171,14 +174,16 @@ def table(rows, command, control):
              "anyway). 95 %% interval: percentile bootstrap of the ratio over the run pairs. Last column: the "
              "checkers' own time per validity check over all runs (the runs' `validity check time` ÷ `validity "
              "checks`), %s ÷ %s: what the checker controls, without the planner's own work and the spread of solve "
-             "times." % (command, names[0], names[1]), "",
+             "times. Checks' share: %s's validity check time ÷ its solve time, summed over the runs; a checker that "
+             "is k times as fast per check can shorten the solves by at most that share × (1 − k)." % (
+                 command, names[0], names[1], names[1]), "",
              "| problem | planner | runs | solved in time, {0} | solved in time, {1} | median s, {0} | "
-             "median s, {1} | {0} ÷ {1} | 95 % interval | per check, {0} ÷ {1} |".format(*names),
-             "|---|---|---:|---:|---:|---:|---:|---:|---|---:|"]
-    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, (low, high), censored, per_check in rows:
-        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s | %.3g–%.3g | %.3g |" % (
+             "median s, {1} | {0} ÷ {1} | 95 % interval | per check, {0} ÷ {1} | checks' share, {1} |".format(*names),
+             "|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|"]
+    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, (low, high), censored, per_check, share in rows:
+        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s | %.3g–%.3g | %.3g | %.2f |" % (
             problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t,
-            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, low, high, per_check))
+            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, low, high, per_check, share))
     if not control:
         lines += ["", "Target (issue 6): ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
     return "\n".join(lines) + "\n"
