@@ -26,7 +26,8 @@ a first exact solution, the question a validity checker's speed answers.
 Prints (and writes to OUT/solve_times.md) one Markdown row per problem and planner: runs, exact
 solutions found before the time limit, median solve time with each checker (a run without one counts
 as the time limit, as OMPL records it), ours ÷ FCL, and the two checkers' time per validity check
-over all runs (from the runs' validity check counters), ours ÷ FCL. When half or more of a checker's runs found no exact
+over all runs (from the runs' validity check counters), ours ÷ FCL, and the share of FCL's solve
+time its checks took. When half or more of a checker's runs found no exact
 solution, its median is the time limit, not a solve time, and the ratio is marked "censored".
 Each ratio of medians comes with a 95 % interval: a percentile bootstrap that resamples the run
 pairs (both checkers' run r together, as they share a seed), 2000 resamples from a fixed seed.
@@ -151,7 +152,7 @@ def rows_for(problem, runs, seconds):
         ratio = median_time(ours) / median_time(fcl)
         low, high = bootstrap_interval([r[0] for r in ours], [r[0] for r in fcl])
         # What share of the reference's solve time its checks took (both summed over the runs):
-        # a checker k times as fast per check can save at most that share times 1 - k.
+        # the same checks at k times the cost each change the solve time by that share times k - 1.
         checking_share = sum(r[3] for r in fcl) / sum(r[0] for r in fcl)
         rows.append((problem, label, len(ours), sum(r[1] for r in ours), sum(r[1] for r in fcl),
                      median_time(ours), median_time(fcl), ratio, (low, high), censored(ours) or censored(fcl),
@@ -174,8 +175,8 @@ def table(rows, command, control):
              "anyway). 95 %% interval: percentile bootstrap of the ratio over the run pairs. Last column: the "
              "checkers' own time per validity check over all runs (the runs' `validity check time` ÷ `validity "
              "checks`), %s ÷ %s: what the checker controls, without the planner's own work and the spread of solve "
-             "times. Checks' share: %s's validity check time ÷ its solve time, summed over the runs; a checker that "
-             "is k times as fast per check can shorten the solves by at most that share × (1 − k)." % (
+             "times. Checks' share: %s's validity check time ÷ its solve time, summed over the runs; making the same "
+             "checks at k times the cost per check changes the solve time by that share × (k − 1)." % (
                  command, names[0], names[1], names[1]), "",
              "| problem | planner | runs | solved in time, {0} | solved in time, {1} | median s, {0} | "
              "median s, {1} | {0} ÷ {1} | 95 % interval | per check, {0} ÷ {1} | checks' share, {1} |".format(*names),
