@@ -15,6 +15,8 @@
 #                         bench_scenes: every scene, every method, against the oracle
 #   scenes.txt            what bench_scenes printed (per scene: checksums beside the oracle's)
 #   ratios.md             bench/ratio_summary.py: issue 6's distance ratios from scenes.csv
+#   profile_modes.md      bench/profile_modes.py: where exact and 1 % tolerance queries spend their
+#                         time, per stage of the traversal (perf; skipped when perf is missing)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
 #                         triangle pairs) per mode beside the time, ours and FCL's (what bounds a ratio)
 #   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_hard.md
@@ -24,8 +26,8 @@
 #                         the same with FCL's checker in both places (--control fcl): how far
 #                         those rows move when nothing differs
 #   run_all.log           what each step printed on stderr, and its time
-# then bench/update_readme.py pastes them into README.md's blocks `speed`, `planning` and
-# `planning_control`.
+# then bench/update_readme.py pastes them into README.md's blocks `speed`, `profile`, `planning`
+# and `planning_control`.
 # Each step writes into a temporary directory that replaces bench/results only when every step
 # succeeded, so a failed run leaves the last good results and the README as they were.
 # Exit status: the first failing step's (bench_scenes: 3 when an answer disagrees with the oracle).
@@ -39,7 +41,7 @@ while [[ $# -gt 0 ]]; do
     --no-planning) planning=0 ;;
     --paste-only) paste_only=1 ;;
     --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
-    -h|--help) sed -n '2,30p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,32p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
@@ -53,20 +55,26 @@ paste_readme() {
     "$build/bench/bench_scenes --out bench/results (the paper's Table 1)" bench/results/table1.md \
     "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (issue 6's ratios, medians)" bench/results/ratios.md \
     "$build/bench/bench_scene_counters --repeat 20 (work per query on the planning problems)" bench/results/scene_counters.txt
+  if [[ -f bench/results/profile_modes.md ]]; then
+    /usr/bin/python3 bench/update_readme.py "$readme_file" profile \
+      "bench/profile_modes.py --counters $build/bench/bench_scene_counters" bench/results/profile_modes.md \
+      "bench/profile_modes.py --counters $build/bench/bench_scene_counters --scenes problem_maze,problem_thin_wall,problem_alpha_puzzle,problem_cow_doorway --repeat 50" \
+      bench/results/profile_modes_more.md
+  fi
   if [[ -f bench/results/planning_solve_times.md ]]; then
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall" \
       bench/results/planning_solve_times.md \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 10 --time 5 --only maze" \
       bench/results/planning_solve_times_maze.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 20 --time 10 --only bug_trap,twisted_passage" \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 10 --only bug_trap,twisted_passage" \
       bench/results/planning_solve_times_hard.md
   fi
   if [[ -f bench/results/planning_control.md ]]; then
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall --control fcl" \
       bench/results/planning_control.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 20 --time 10 --only bug_trap,twisted_passage --control fcl" \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 10 --only bug_trap,twisted_passage --control fcl" \
       bench/results/planning_control_hard.md
   fi
 }
@@ -114,11 +122,21 @@ step scenes sh -c "'$build/bench/bench_scenes' --out '$staging' > '$staging/scen
 sed -i "s#$staging/#bench/results/#g; s#--out $staging#--out bench/results#" "$staging/scenes.md" "$staging/table1.md" "$staging/scenes.txt"
 step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
 step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
+if command -v perf >/dev/null; then
+  # Shares of perf samples, not times: little moved by a busy machine. The first three scenes at
+  # 200 repeats, the rest at 50 (the alpha puzzle and the cow doorway take 0.1 ms per query).
+  step profile sh -c "bench/profile_modes.py --counters '$build/bench/bench_scene_counters' > '$staging/profile_modes.md'"
+  step profile_more sh -c "bench/profile_modes.py --counters '$build/bench/bench_scene_counters' \
+    --scenes problem_maze,problem_thin_wall,problem_alpha_puzzle,problem_cow_doorway --repeat 50 > '$staging/profile_modes_more.md'"
+else
+  echo "run_all.sh: no perf, profile_modes.md not made" >&2
+fi
 if [[ $planning -eq 1 ]]; then
-  # Twenty runs per problem, planner and checker (forty where runs take milliseconds): solve times
-  # spread over a factor of a hundred between seeds, and with five or ten runs the median was one
-  # pair's ratio (the bug trap's RRTConnect row read 0.88 in one run of this script and 1.11 in the
-  # next, with the same core).
+  # Forty runs per problem, planner and checker: solve times spread over a factor of a hundred
+  # between seeds, and with five or ten runs the median was one pair's ratio (the bug trap's
+  # RRTConnect row read 0.88 in one run of this script and 1.11 in the next, with the same core).
+  # PRM's runs are not paired (its two threads), and with twenty its rows' 95 % intervals spanned
+  # 0.5-1.6 on the bug trap and the twisted passage, with FCL's checker in both places too.
   # The maze gets ten: its PRM row is censored (neither checker solves it within 5 s) and costs
   # the time limit per run. The cow doorway and the alpha puzzle are left out: RRTConnect and PRM
   # rarely solve them within a minute with either checker (problems/README.md), so their medians
@@ -129,14 +147,14 @@ if [[ $planning -eq 1 ]]; then
   step planning_maze /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
     --problems "$build/problem_files" --out "$planning_work/maze" --runs 10 --time 5 --only maze
   step planning_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/hard" --runs 20 --time 10 --only bug_trap,twisted_passage
+    --problems "$build/problem_files" --out "$planning_work/hard" --runs 40 --time 10 --only bug_trap,twisted_passage
   # The control: FCL's checker against itself, same commands. Its ratios should be 1; how far they
   # are not, with their intervals, is the noise the rows above must be read against.
   step planning_control /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
     --problems "$build/problem_files" --out "$planning_work/control" --runs 40 --time 5 --only office,thin_wall \
     --control fcl
   step planning_control_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/control_hard" --runs 20 --time 10 \
+    --problems "$build/problem_files" --out "$planning_work/control_hard" --runs 40 --time 10 \
     --only bug_trap,twisted_passage --control fcl
   cp "$planning_work/control/solve_times.md" "$staging/planning_control.md"
   cp "$planning_work/control_hard/solve_times.md" "$staging/planning_control_hard.md"
