@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Where an exact and a 1 % tolerance query spend their time on the prebuilt trees: a perf profile of bench_scene_counters per mode, our code's samples grouped by the
-stage of the traversal they belong to (issue 6: "if a ratio cannot be met, say which, with the
-profile and counters that show what bounds it").
+"""Where an exact and a 1 % tolerance query spend their time on the prebuilt trees: a perf
+profile of bench_scene_counters per mode, our code's samples grouped by the stage of the traversal
+they belong to (issue 6: "if a ratio cannot be met, say which, with the profile and counters that
+show what bounds it").
 
 usage: profile_modes.py --counters PROGRAM [--scenes a,b,...] [--modes exact,tol] [--repeat N] [--verbose]
 
@@ -9,8 +10,8 @@ PROGRAM is a Release build of bench/bench_scene_counters. For each mode, runs
   perf record -o TMP PROGRAM --scenes SCENES --modes MODE --repeat N
 then `perf report --no-children --sort dso,symbol` and keeps the samples in PROGRAM itself (our core
 is linked into it; FCL's comparison queries run in libfcl and are left out). Mode `known` is not
-useful here: its untimed exact query, which finds the answer it is told, is profiled with it. Each of our symbols
-falls in one stage by its name:
+useful here: its untimed exact query, which finds the answer it is told, is profiled with it.
+Each of our symbols falls in one stage by its name:
   node pairs         the box lower bounds of node pairs and the traversal that tests and splits them
                      (boxLowerBound, traverseTrees and its lambdas, placedBox)
   queue              the best-first heap of pending node pairs (std::*_heap on PendingNodePair)
@@ -118,7 +119,8 @@ def main():
                   " | ".join("%.0f %%" % (100 * stages[n] / first_total) for n in names) + " |")
             if args.verbose:
                 for symbol, samples in others.most_common(10):
-                    print("  %s, other: %.1f %% %s" % (mode, 100 * samples / first_total, symbol[:120]), file=sys.stderr)
+                    share = 100 * samples / first_total
+                    print("  %s, other: %.1f %% %s" % (mode, share, symbol[:120]), file=sys.stderr)
 
 
 if __name__ == "__main__":
