@@ -4,9 +4,10 @@
 #
 #   bench/run_all.sh [BUILD_DIR] [--long] [--no-readme] [--no-planning] [--paste-only] [--readme FILE]
 #
-# About 13 minutes on an idle 2-core machine (issue 5 asks for under 15). --long: 40 runs instead of
-# 20 on the bug trap and the twisted passage, and their control, about 28 minutes; the README's
-# planning figures come from it (PRM's rows need the runs, see the README's planning section).
+# About 12 minutes on an idle 2-core machine (issue 5 asks for under 15). --long: 40 runs instead of
+# 20 on the bug trap and the twisted passage, and the controls (FCL's checker against itself),
+# about 28 minutes; the README's planning figures come from it (PRM's rows need the runs and the
+# control, see the README's planning section).
 # --paste-only: run nothing, paste bench/results into the README's blocks again; --readme FILE:
 # paste into FILE instead of README.md (same layout).
 #
@@ -22,10 +23,11 @@
 #                         time, per stage of the traversal (perf; skipped when perf cannot sample)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
 #                         triangle pairs) per mode beside the time, ours and FCL's (what bounds a ratio)
-#   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_hard.md
+#   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_maze_prm.md,
+#   planning_solve_times_hard.md
 #                         bench/planning/solve_time_ratios.py: issue 6's end-to-end row (RRTConnect
 #                         and PRM, median solve time with our checker and FCL's, interleaved)
-#   planning_control.md, planning_control_hard.md
+#   planning_control.md, planning_control_hard.md (--long only)
 #                         the same with FCL's checker in both places (--control fcl): how far
 #                         those rows move when nothing differs
 #   run_all.log           what each step printed on stderr, and its time
@@ -45,7 +47,7 @@ while [[ $# -gt 0 ]]; do
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
     --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
-    -h|--help) sed -n '2,36p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,38p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
@@ -72,19 +74,19 @@ paste_readme() {
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall" \
       bench/results/planning_solve_times.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 10 --time 5 --only maze" \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only maze --planners rrtconnect" \
       bench/results/planning_solve_times_maze.md \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 5 --time 5 --only maze --planners prm" \
+      bench/results/planning_solve_times_maze_prm.md \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs $hard_runs --time 10 --only bug_trap,twisted_passage" \
       bench/results/planning_solve_times_hard.md
   fi
   if [[ -f bench/results/planning_control.md ]]; then
-    local control=(
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall --control fcl"
-      bench/results/planning_control.md)
-    [[ -f bench/results/planning_control_hard.md ]] && control+=(
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 10 --only bug_trap,twisted_passage --control fcl"
-      bench/results/planning_control_hard.md)
-    /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control "${control[@]}"
+    /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall --control fcl" \
+      bench/results/planning_control.md \
+      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 10 --only bug_trap,twisted_passage --control fcl" \
+      bench/results/planning_control_hard.md
   fi
 }
 if [[ $paste_only -eq 1 ]]; then
@@ -152,7 +154,7 @@ if [[ $planning -eq 1 ]]; then
   # RRTConnect row read 0.88 in one run of this script and 1.11 in the next, with the same core).
   # PRM's runs are not paired (its two threads), and with twenty its rows' 95 % intervals spanned
   # 0.5-1.6 on the bug trap and the twisted passage, with FCL's checker in both places too.
-  # The maze gets ten: its PRM row is censored (neither checker solves it within 5 s) and costs
+  # The maze's PRM row gets five: it is censored (neither checker solves it within 5 s) and costs
   # the time limit per run. The cow doorway and the alpha puzzle are left out: RRTConnect and PRM
   # rarely solve them within a minute with either checker (problems/README.md), so their medians
   # would be the time limit, not a solve time.
@@ -160,24 +162,30 @@ if [[ $planning -eq 1 ]]; then
   step planning /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
     --problems "$build/problem_files" --out "$planning_work/fast" --runs 40 --time 5 --only office,thin_wall
   step planning_maze /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/maze" --runs 10 --time 5 --only maze
+    --problems "$build/problem_files" --out "$planning_work/maze" --runs 40 --time 5 --only maze --planners rrtconnect
+  step planning_maze_prm /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
+    --problems "$build/problem_files" --out "$planning_work/maze_prm" --runs 5 --time 5 --only maze --planners prm
   step planning_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
     --problems "$build/problem_files" --out "$planning_work/hard" --runs $((long ? 40 : 20)) --time 10 \
     --only bug_trap,twisted_passage
-  # The control: FCL's checker against itself, same commands. Its ratios should be 1; how far they
-  # are not, with their intervals, is the noise the rows above must be read against.
-  step planning_control /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/control" --runs 40 --time 5 --only office,thin_wall \
-    --control fcl
   if [[ $long -eq 1 ]]; then
+    # The control: FCL's checker against itself, same commands. Its ratios should be 1; how far
+    # they are not, with their intervals, is the noise the rows above must be read against.
+    step planning_control /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
+      --problems "$build/problem_files" --out "$planning_work/control" --runs 40 --time 5 --only office,thin_wall \
+      --control fcl
     step planning_control_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
       --problems "$build/problem_files" --out "$planning_work/control_hard" --runs 40 --time 10 \
       --only bug_trap,twisted_passage --control fcl
+    cp "$planning_work/control/solve_times.md" "$staging/planning_control.md"
     cp "$planning_work/control_hard/solve_times.md" "$staging/planning_control_hard.md"
+  elif ls bench/results/planning_control*.md >/dev/null 2>&1; then
+    echo "run_all.sh: no --long: planning_control*.md kept from the last run with --long" >&2
+    cp bench/results/planning_control*.md "$staging/"
   fi
-  cp "$planning_work/control/solve_times.md" "$staging/planning_control.md"
   cp "$planning_work/fast/solve_times.md" "$staging/planning_solve_times.md"
   cp "$planning_work/maze/solve_times.md" "$staging/planning_solve_times_maze.md"
+  cp "$planning_work/maze_prm/solve_times.md" "$staging/planning_solve_times_maze_prm.md"
   cp "$planning_work/hard/solve_times.md" "$staging/planning_solve_times_hard.md"
   rm -rf "$planning_work"
 elif [[ -d bench/results ]]; then
