@@ -6,7 +6,7 @@
 #
 # About 12 minutes on an idle 2-core machine (issue 5 asks for under 15). --long: 40 runs instead of
 # 20 on the bug trap and the twisted passage, and the controls (FCL's checker against itself),
-# about 28 minutes; the README's planning figures come from it (PRM's rows need the runs and the
+# about 27 minutes; the README's planning figures come from it (PRM's rows need the runs and the
 # control, see the README's planning section).
 # --paste-only: run nothing, paste bench/results into the README's blocks again; --readme FILE:
 # paste into FILE instead of README.md (same layout).
