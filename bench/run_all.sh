@@ -69,7 +69,7 @@ paste_readme() {
   fi
   # The hard problems' run count is --long's or not: read it back from the table's own command.
   local hard_runs
-  hard_runs=$(sed -n 's/^Command: `[^`]*--runs \([0-9]*\).*/\1/p' bench/results/planning_solve_times_hard.md 2>/dev/null)
+  hard_runs=$(sed -n 's/^Command: `[^`]*--runs \([0-9]*\).*/\1/p' bench/results/planning_solve_times_hard.md 2>/dev/null || true)
   if [[ -f bench/results/planning_solve_times.md ]]; then
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall" \
