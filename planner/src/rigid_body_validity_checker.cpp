@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "adsd/error.h"
+#include "adsd/tolerances.h"
 #include "adsd/planner/state_pose.h"
 
 namespace adsd::planner {
@@ -31,37 +32,57 @@ RigidBodyValidityChecker::RigidBodyValidityChecker(const ompl::base::SpaceInform
     robotBoxes_.push_back(part.bounds());
     robotBallRadii_.push_back(radius);
   }
-  for (const Mesh& part : scene_->environment) environmentBoxes_.push_back(part.bounds());
+  for (const Mesh& part : scene_->environment) {
+    for (int k = 0; k < 3; ++k) {
+      environmentCentres_[k].push_back(part.bounds().center()[k]);
+      environmentHalves_[k].push_back(0.5 * part.bounds().sizes()[k]);
+    }
+  }
 }
 
-void RigidBodyValidityChecker::broadPhase(const Pose& robotPose, std::vector<PairBound>& pairs) const {
+double RigidBodyValidityChecker::broadPhase(const Pose& robotPose, double limit, std::vector<PairBound>& pairs) const {
   pairs.clear();
+  // Coordinates of size M carry errors of a few eps M into every bound below (the core's own
+  // allowance, adsd/tolerances.h); a pair is skipped only when its bound exceeds the limit by more.
+  const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon *
+                       (scale_ + robotPose.translation().cwiseAbs().maxCoeff());
+  const double reach = limit + slack;  // infinite for a clearance query without a cap
+  const double reach2 = reach * reach;
+  const std::size_t environmentParts = environmentCentres_[0].size();
   for (std::size_t r = 0; r < robotBallCentres_.size(); ++r) {
-    const Vec3 centre = robotPose * robotBallCentres_[r];
+    const Vec3 ballCentre = robotPose * robotBallCentres_[r];
     // World box around the posed body-frame box: centre moved, half extents through |R|.
     const Vec3 boxCentre = robotPose * robotBoxes_[r].center();
     const Vec3 boxHalf = robotPose.linear().cwiseAbs() * (0.5 * robotBoxes_[r].sizes());
-    for (std::size_t e = 0; e < environmentBoxes_.size(); ++e) {
+    const double radius = robotBallRadii_[r];
+    const double ballReach2 = (reach + radius) * (reach + radius);
+    for (std::size_t e = 0; e < environmentParts; ++e) {
       // Both are distances between sets that contain the two meshes, so neither exceeds the
-      // meshes' distance.
-      const double ballBound = environmentBoxes_[e].exteriorDistance(centre) - robotBallRadii_[r];
-      const Vec3 gap = ((environmentBoxes_[e].center() - boxCentre).cwiseAbs() - boxHalf -
-                        0.5 * environmentBoxes_[e].sizes())
-                           .cwiseMax(0.0);
-      const double lower = std::max({0.0, ballBound, gap.norm()});
-      pairs.push_back({lower, r, e});
+      // meshes' distance; compared squared, so that the parts skipped (most of them) cost no root.
+      double ball2 = 0.0, box2 = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        const double centre = environmentCentres_[k][e], half = environmentHalves_[k][e];
+        const double ballGap = std::max(0.0, std::abs(centre - ballCentre[k]) - half);
+        const double boxGap = std::max(0.0, std::abs(centre - boxCentre[k]) - half - boxHalf[k]);
+        ball2 += ballGap * ballGap;
+        box2 += boxGap * boxGap;
+      }
+      if (ball2 > ballReach2 || box2 > reach2) continue;
+      pairs.push_back({std::max({0.0, std::sqrt(ball2) - radius, std::sqrt(box2)}), r, e});
     }
   }
-  if (pairs.size() > 1) {
-    std::sort(pairs.begin(), pairs.end(), [](const PairBound& a, const PairBound& b) { return a.lower < b.lower; });
-  }
+  return slack;
 }
 
 bool RigidBodyValidityChecker::separatedAbove(const Pose& robotPose, double margin) const {
   thread_local std::vector<PairBound> pairs;
-  broadPhase(robotPose, pairs);
+  broadPhase(robotPose, margin, pairs);
+  // Nearest first: when the robot collides, it is most likely with the nearest part. The broad
+  // phase leaves few pairs (most checks: none or one), so sorting them costs little.
+  if (pairs.size() > 1) {
+    std::sort(pairs.begin(), pairs.end(), [](const PairBound& a, const PairBound& b) { return a.lower < b.lower; });
+  }
   for (const PairBound& pair : pairs) {
-    if (pair.lower > margin) break;  // this pair and all after it are proven farther than the margin
     if (!pairSeparatedAbove(pair.robot, pair.environment, robotPose, margin)) return false;
   }
   return true;
@@ -69,10 +90,16 @@ bool RigidBodyValidityChecker::separatedAbove(const Pose& robotPose, double marg
 
 double RigidBodyValidityChecker::distanceUpTo(const Pose& robotPose, double cap) const {
   thread_local std::vector<PairBound> pairs;
-  broadPhase(robotPose, pairs);
+  const double slack = broadPhase(robotPose, cap, pairs);
+  // Nearest first, from a heap: the bound usually passes the remaining pairs' bounds after a few.
+  const auto fartherFirst = [](const PairBound& a, const PairBound& b) { return a.lower > b.lower; };
+  std::make_heap(pairs.begin(), pairs.end(), fartherFirst);
   double best = cap;  // a lower bound on the distance, valid for every pair visited or skipped
-  for (const PairBound& pair : pairs) {
-    if (pair.lower >= best) break;  // cannot bring the minimum below `best`
+  while (!pairs.empty()) {
+    std::pop_heap(pairs.begin(), pairs.end(), fartherFirst);
+    const PairBound pair = pairs.back();
+    pairs.pop_back();
+    if (pair.lower > best + slack) break;  // this pair and all left are proven no nearer than `best`
     const PairDistance d = pairDistance(pair.robot, pair.environment, robotPose, best);
     if (!d.reachedCap) best = std::min(best, d.lower);
     if (best <= 0.0) break;  // in contact: nothing is nearer

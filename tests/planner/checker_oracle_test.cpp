@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <random>
 
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
@@ -160,6 +161,44 @@ TEST(CheckerVersusOracle, BroadPhaseOverSeveralEnvironmentMeshes) {
                           shapes::merge({shapes::officeScene().environment}, {far})};
   f.oracleEnvironment = f.scene->environment;
   compareWithOracle(f, 100, 7);
+}
+
+TEST(BroadPhase, KeepsBoxesTouchingWithinRoundoff) {
+  // A robot box pressed face to face against an environment box: the meshes touch (distance 0, a
+  // collision at margin 0), yet the broad phase's box gap, computed from rounded centres and half
+  // extents, comes out a few ulps above 0 for many sizes. Such a pair must still reach the narrow
+  // phase.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coordinate(-5.0, 5.0), length(0.01, 2.0);
+  int cases = 0, gapRoundsAboveZero = 0;
+  while (cases < 100) {
+    const double halfWidth = length(rng), lo = coordinate(rng), hi = lo + length(rng);
+    const double x = hi + halfWidth;
+    if (x - halfWidth != hi) continue;
+    ++cases;
+    const double centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    if (std::abs(centre - x) - half - halfWidth > 0.0) ++gapRoundsAboveZero;
+
+    const Mesh unit = shapes::box(Vec3(1.0, 1.0, 1.0));
+    std::vector<Vec3> corners = unit.vertices();
+    for (Vec3& v : corners) v.x() = v.x() < 0.0 ? lo : hi;
+    const shapes::ProblemScene generated{
+        "touching boxes", {shapes::box(Vec3(halfWidth, 0.5, 0.5))}, Mesh(corners, unit.triangles(), "wall")};
+    const SceneFixture f = test::makeFixture(generated, RigidBodySpace::se2, {Vec3(-10, -10, 0), Vec3(10, 10, 0)});
+    ompl::base::ScopedState<ompl::base::SE2StateSpace> state(f.si);
+    state->setXY(x, 0.0);
+    state->setYaw(0.0);
+    // The touch, checked by construction rather than by the oracle (whose binary128 triangle
+    // distance reads these coplanar faces as ~1e-16 apart): the robot's lowest x lands on hi.
+    const Pose pose = poseFromState(state.get(), f.scene->space);
+    double lowestX = std::numeric_limits<double>::infinity();
+    for (const Vec3& v : f.scene->robot[0].vertices()) lowestX = std::min(lowestX, (pose * v).x());
+    ASSERT_EQ(lowestX, hi);
+    const MeshValidityChecker ours(f.si, f.scene);
+    EXPECT_FALSE(ours.isValid(state.get())) << "lo " << lo << " hi " << hi << " half width " << halfWidth;
+    EXPECT_EQ(ours.clearance(state.get()), 0.0) << "lo " << lo << " hi " << hi << " half width " << halfWidth;
+  }
+  EXPECT_GT(gapRoundsAboveZero, 10);  // the rounding this test is about happened
 }
 
 TEST(SplitIntoParts, KeepsEveryTriangleOnce) {

@@ -3,6 +3,7 @@
 /// \brief The part every rigid-body checker shares (ours and FCL's): the OMPL interface, the
 /// bounds check, the broad phase over robot × environment mesh pairs, and the counters.
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -27,9 +28,9 @@ namespace adsd::planner {
 /// environment mesh in a world-frame box. The larger of the ball–box distance and the distance
 /// between the environment box and the world box around the posed robot box is a lower bound on
 /// the pair's distance (the box suits long thin robots, the ball turned ones). A mesh pair whose
-/// bound exceeds the current bound (the safety
-/// margin for validity, the best distance so far for clearance) cannot change the answer and is
-/// skipped; pairs are visited nearest first so the bound tightens early.
+/// bound exceeds the current bound (the safety margin for validity, the best distance so far for
+/// clearance) by more than roundoff cannot change the answer and is skipped; the pairs left are
+/// visited nearest first so that a collision is found, or the clearance bound tightens, early.
 class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
  public:
   RigidBodyValidityChecker(const ompl::base::SpaceInformationPtr& si, std::shared_ptr<const RigidBodyScene> scene,
@@ -77,13 +78,16 @@ class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
   std::shared_ptr<const RigidBodyScene> scene_;
 
  private:
-  /// \brief Distance bound for every pair from the broad phase, nearest first.
+  /// \brief A mesh pair the broad phase could not skip, with its lower bound.
   struct PairBound {
     double lower;
     std::size_t robot;
     std::size_t environment;
   };
-  void broadPhase(const Pose& robotPose, std::vector<PairBound>& pairs) const;
+  /// \brief Fills \p pairs with the mesh pairs whose lower bound is at most \p limit plus the
+  /// roundoff allowance (in no particular order), and returns that allowance. Environment boxes
+  /// are kept coordinate by coordinate: the loop over them runs on every check.
+  double broadPhase(const Pose& robotPose, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const Pose& robotPose, double margin) const;
   double distanceUpTo(const Pose& robotPose, double cap) const;
 
@@ -93,7 +97,8 @@ class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
   std::vector<Vec3> robotBallCentres_;  ///< body frame
   std::vector<double> robotBallRadii_;
   std::vector<Eigen::AlignedBox3d> robotBoxes_;  ///< body frame
-  std::vector<Eigen::AlignedBox3d> environmentBoxes_;  ///< world frame
+  /// Environment boxes, world frame: centres and half extents, one array per coordinate.
+  std::array<std::vector<double>, 3> environmentCentres_, environmentHalves_;
   mutable QueryCounters counters_;
 };
 
