@@ -188,8 +188,9 @@ TEST(BroadPhase, KeepsBoxesTouchingWithinRoundoff) {
     ompl::base::ScopedState<ompl::base::SE2StateSpace> state(f.si);
     state->setXY(x, 0.0);
     state->setYaw(0.0);
-    // The touch, checked by construction rather than by the oracle (whose binary128 triangle
-    // distance reads these coplanar faces as ~1e-16 apart): the robot's lowest x lands on hi.
+    // The touch, checked by construction: the robot's lowest x lands on hi exactly. (The oracle
+    // read 1.7e-16 for the first case: far within the 1e-10 x scale it is trusted to, but not
+    // the exact 0 this test is about.)
     const Pose pose = poseFromState(state.get(), f.scene->space);
     double lowestX = std::numeric_limits<double>::infinity();
     for (const Vec3& v : f.scene->robot[0].vertices()) lowestX = std::min(lowestX, (pose * v).x());
