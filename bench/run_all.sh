@@ -13,7 +13,7 @@
 # paste into FILE instead of README.md (same layout).
 #
 # BUILD_DIR (default: build) must hold a Release build of the targets
-#   bench_distance_vs_fcl bench_scenes bench_scene_counters adsd adsd_problems
+#   bench_distance_vs_fcl bench_scenes bench_scene_counters bench_checker_calls adsd adsd_problems
 # and the real meshes must be cached (problems/data/fetch_meshes.sh). Writes bench/results/:
 #   distance_vs_fcl.txt   bench_distance_vs_fcl (issue 2: cow x cow from scratch against FCL)
 #   scenes.csv, scenes.md, table1.md, time_vs_error.png, time_vs_triangles.png
@@ -24,6 +24,8 @@
 #                         time, per stage of the traversal (perf; skipped when perf cannot sample)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
 #                         triangle pairs) per mode beside the time, ours and FCL's (what bounds a ratio)
+#   checker_calls.txt     bench_checker_calls: microseconds per isValid call of each checker on
+#                         uniform states of the planning problems (the checker's term of the planning rows)
 #   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_maze_prm.md,
 #   planning_solve_times_hard.md
 #                         bench/planning/solve_time_ratios.py: issue 6's end-to-end row (RRTConnect
@@ -55,6 +57,12 @@ while [[ $# -gt 0 ]]; do
   shift
 done
 
+# The planning problems bench_checker_calls times (those the planning rows run).
+checker_call_problems() {
+  local p="$1/problem_files"
+  echo "$p/office.cfg $p/maze.cfg $p/thin_wall.cfg $p/bug_trap.cfg $p/twisted_passage.cfg"
+}
+
 # Pastes bench/results into the README's blocks (the commands shown are those that made them).
 paste_readme() {
   /usr/bin/python3 bench/update_readme.py "$readme_file" speed \
@@ -72,7 +80,10 @@ paste_readme() {
   local hard_runs
   hard_runs=$(sed -n 's/^Command: `[^`]*--runs \([0-9]*\).*/\1/p' bench/results/planning_solve_times_hard.md 2>/dev/null || true)
   if [[ -f bench/results/planning_solve_times.md ]]; then
-    /usr/bin/python3 bench/update_readme.py "$readme_file" planning \
+    local calls=()  # results from before bench_checker_calls existed have no checker_calls.txt
+    [[ -f bench/results/checker_calls.txt ]] &&
+      calls=("$build/bench/bench_checker_calls $(checker_call_problems "$build")" bench/results/checker_calls.txt)
+    /usr/bin/python3 bench/update_readme.py "$readme_file" planning "${calls[@]}" \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall" \
       bench/results/planning_solve_times.md \
       "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only maze --planners rrtconnect" \
@@ -94,7 +105,8 @@ if [[ $paste_only -eq 1 ]]; then
   paste_readme
   exit 0
 fi
-for program in bench/bench_distance_vs_fcl bench/bench_scenes bench/bench_scene_counters planner/app/adsd; do
+for program in bench/bench_distance_vs_fcl bench/bench_scenes bench/bench_scene_counters bench/bench_checker_calls \
+  planner/app/adsd; do
   [[ -x "$build/$program" ]] || { echo "run_all.sh: no $build/$program (build the targets first, see --help)" >&2; exit 2; }
 done
 [[ -d "$build/problem_files" ]] || { echo "run_all.sh: no $build/problem_files (build adsd_problems)" >&2; exit 2; }
@@ -134,6 +146,7 @@ step scenes sh -c "'$build/bench/bench_scenes' --out '$staging' > '$staging/scen
 sed -i "s#$staging/#bench/results/#g; s#--out $staging#--out bench/results#" "$staging/scenes.md" "$staging/table1.md" "$staging/scenes.txt"
 step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
 step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
+step checker_calls sh -c "'$build/bench/bench_checker_calls' $(checker_call_problems "$build") > '$staging/checker_calls.txt'"
 # perf may be installed yet not allowed to sample (kernel.perf_event_paranoid, containers): try it.
 if command -v perf >/dev/null && perf record -q -o "$staging/perf-probe.data" true >/dev/null 2>&1; then
   rm -f "$staging/perf-probe.data"
