@@ -10,6 +10,14 @@
 
 namespace adsd::planner {
 
+namespace {
+
+/// Environment parts whose box bounds the broad phase works out together (count): a block's
+/// bounds live on the stack, and a planning problem's parts (tens to a few hundred) fill a few.
+constexpr std::size_t kBroadPhaseBlock = 64;
+
+}  // namespace
+
 RigidBodyValidityChecker::RigidBodyValidityChecker(const ompl::base::SpaceInformationPtr& si,
                                                    std::shared_ptr<const RigidBodyScene> scene, double safetyMargin)
     : ompl::base::StateValidityChecker(si), scene_(std::move(scene)), safetyMargin_(safetyMargin) {
@@ -56,19 +64,33 @@ double RigidBodyValidityChecker::broadPhase(const Pose& robotPose, double limit,
     const Vec3 boxHalf = robotPose.linear().cwiseAbs() * (0.5 * robotBoxes_[r].sizes());
     const double radius = robotBallRadii_[r];
     const double ballReach2 = (reach + radius) * (reach + radius);
-    for (std::size_t e = 0; e < environmentParts; ++e) {
-      // Both are distances between sets that contain the two meshes, so neither exceeds the
-      // meshes' distance; compared squared, so that the parts skipped (most of them) cost no root.
-      double ball2 = 0.0, box2 = 0.0;
+    // Both bounds are distances between sets that contain the two meshes, so neither exceeds the
+    // meshes' distance; compared squared, so that the parts skipped (most of them) cost no root.
+    // The box bound first, for a block of parts at a time in a loop without branches (which the
+    // compiler vectorizes); the ball bound only for the parts it keeps.
+    for (std::size_t first = 0; first < environmentParts; first += kBroadPhaseBlock) {
+      const std::size_t count = std::min(kBroadPhaseBlock, environmentParts - first);
+      double box2[kBroadPhaseBlock];
+      for (std::size_t i = 0; i < count; ++i) box2[i] = 0.0;
       for (int k = 0; k < 3; ++k) {
-        const double centre = environmentCentres_[k][e], half = environmentHalves_[k][e];
-        const double ballGap = std::max(0.0, std::abs(centre - ballCentre[k]) - half);
-        const double boxGap = std::max(0.0, std::abs(centre - boxCentre[k]) - half - boxHalf[k]);
-        ball2 += ballGap * ballGap;
-        box2 += boxGap * boxGap;
+        const double* centres = environmentCentres_[k].data() + first;
+        const double* halves = environmentHalves_[k].data() + first;
+        for (std::size_t i = 0; i < count; ++i) {
+          const double gap = std::max(0.0, std::abs(centres[i] - boxCentre[k]) - halves[i] - boxHalf[k]);
+          box2[i] += gap * gap;
+        }
       }
-      if (ball2 > ballReach2 || box2 > reach2) continue;
-      pairs.push_back({std::max({0.0, std::sqrt(ball2) - radius, std::sqrt(box2)}), r, e});
+      for (std::size_t i = 0; i < count; ++i) {
+        if (box2[i] > reach2) continue;
+        const std::size_t e = first + i;
+        double ball2 = 0.0;
+        for (int k = 0; k < 3; ++k) {
+          const double gap = std::max(0.0, std::abs(environmentCentres_[k][e] - ballCentre[k]) - environmentHalves_[k][e]);
+          ball2 += gap * gap;
+        }
+        if (ball2 > ballReach2) continue;
+        pairs.push_back({std::max({0.0, std::sqrt(ball2) - radius, std::sqrt(box2[i])}), r, e});
+      }
     }
   }
   return slack;
