@@ -18,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include <ompl/base/ScopedState.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
