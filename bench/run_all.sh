@@ -6,9 +6,9 @@
 #
 # About 12 minutes on an idle 2-core machine (issue 5 asks for under 15; its steps' times in
 # session 5's runs add up to 720 s). --long: 40 runs instead of 20 on the bug trap and the twisted
-# passage, and the controls (FCL's checker against itself), 26-30 minutes (session 6: 1 819 s); the README's planning
-# figures come from it (PRM's rows need the runs and the control, see the README's planning
-# section).
+# passage, and the controls (FCL's checker against itself), 26-30 minutes (session 6: 1 819 s);
+# the README's planning figures come from it (PRM's rows need the runs and the control, see the
+# README's planning section).
 # --paste-only: run nothing, paste bench/results into the README's blocks again; --readme FILE:
 # paste into FILE instead of README.md (same layout).
 #
