@@ -50,7 +50,7 @@ while [[ $# -gt 0 ]]; do
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
     --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
-    -h|--help) sed -n '2,39p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,41p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
