@@ -39,6 +39,8 @@
 # Each step writes into a temporary directory that replaces bench/results only when every step
 # succeeded, so a failed run leaves the last good results and the README as they were.
 # Exit status: the first failing step's (bench_scenes: 3 when an answer disagrees with the oracle).
+# Do not edit this script or bench/ while it runs: bash reads a script as it goes (a run in session
+# 6 failed at its last step that way), and each step runs the bench programs and scripts afresh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -50,7 +52,7 @@ while [[ $# -gt 0 ]]; do
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
     --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
-    -h|--help) sed -n '2,41p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,43p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
