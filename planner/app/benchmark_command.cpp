@@ -18,9 +18,10 @@
 // the end (through a temporary name; the spools are removed, also on error).
 //
 // Each run records, beside OMPL's own properties: the checker and the motion validator, the run's
-// index, and the planner's own queries: validity checks and clearance queries with their time,
-// motion checks. These counters are read when the planner's solve returns, before the benchmark's
-// bookkeeping (solution checks, clearance, simplification) queries the checker again.
+// index, the planner's own solve time ("planner time": OMPL's "time" without its termination
+// thread's start and join), and the planner's own queries: validity checks and clearance queries
+// with their time, motion checks. These are read when the planner's solve returns, before the
+// benchmark's bookkeeping (solution checks, clearance, simplification) queries the checker again.
 //
 // Exit status: 0 done; 1 a tool failed or no run was recorded; 2 bad input (one line naming the
 // file, line and key, or the option).
@@ -204,7 +205,8 @@ const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" :
 
 // ---- measuring the planner's own queries ---------------------------------------------------------
 
-/// \brief Runs another planner unchanged and calls \p atSolveEnd the moment its solve returns.
+/// \brief Runs another planner unchanged and calls \p atSolveEnd the moment its solve returns,
+/// with the seconds that solve took.
 ///
 /// Why: ompl::tools::Benchmark calls the post-run event only after its bookkeeping on the solution
 /// (it checks the path twice, the second time at four times the resolution, measures its
@@ -215,7 +217,7 @@ const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" :
 /// progress properties.
 class MeasuredPlanner final : public ob::Planner {
  public:
-  MeasuredPlanner(ob::PlannerPtr planner, const std::string& label, std::function<void()> atSolveEnd)
+  MeasuredPlanner(ob::PlannerPtr planner, const std::string& label, std::function<void(double)> atSolveEnd)
       : ob::Planner(planner->getSpaceInformation(), label),
         planner_(std::move(planner)),
         atSolveEnd_(std::move(atSolveEnd)) {
@@ -230,9 +232,10 @@ class MeasuredPlanner final : public ob::Planner {
     // Also when the planner throws: Benchmark catches and records the run, and the counts then are
     // what the planner spent before it failed.
     struct AtExit {
-      std::function<void()>& call;
-      ~AtExit() { call(); }
-    } atExit{atSolveEnd_};
+      std::function<void(double)>& call;
+      std::chrono::steady_clock::time_point started;
+      ~AtExit() { call(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()); }
+    } atExit{atSolveEnd_, std::chrono::steady_clock::now()};
     return planner_->solve(ptc);
   }
   void setProblemDefinition(const ob::ProblemDefinitionPtr& pdef) override {
@@ -261,12 +264,17 @@ class MeasuredPlanner final : public ob::Planner {
 
  private:
   ob::PlannerPtr planner_;
-  std::function<void()> atSolveEnd_;
+  std::function<void(double)> atSolveEnd_;
 };
 
 /// The planner's own queries in one run: the counters when its solve returned.
 struct RunQueries {
   bool captured = false;
+  /// The wrapped planner's solve alone, from its call to its return (seconds). OMPL's "time" also
+  /// holds the termination condition's thread, which Planner::solve(fn, period) starts first and
+  /// joins last; that thread sleeps in steps of 1 ms, so the join waits up to 1 ms whatever was
+  /// planned, a large share of a solve that takes 1-2 ms.
+  double plannerSeconds = 0.0;
   QueryCounts queries;
   std::uint64_t motionChecks = 0;
   std::uint64_t motionsRejected = 0;
@@ -288,8 +296,9 @@ struct Combination {
   std::string label() const { return std::string(name(checker)) + ", " + name(motion); }
 };
 
-void captureQueries(Combination& c) {
+void captureQueries(Combination& c, double plannerSeconds) {
   RunQueries& r = c.atSolveEnd;
+  r.plannerSeconds = plannerSeconds;
   r.queries = c.problem->checker()->counts();
   if (const auto& certified = c.problem->certifiedValidator()) {
     const MotionCounts m = certified->counts();
@@ -331,6 +340,7 @@ void addRunProperties(const Combination& c, unsigned runIndex, ot::Benchmark::Ru
   const RunQueries& r = c.atSolveEnd;
   if (!r.captured) return;  // solve never ran; Benchmark has said why
   const QueryCounts& q = r.queries;
+  run["planner time REAL"] = real(r.plannerSeconds);
   run["validity checks INTEGER"] = std::to_string(q.validityChecks);
   run["clearance queries INTEGER"] = std::to_string(q.clearanceQueries);
   run["validity check time REAL"] = real(q.validitySeconds);
@@ -578,7 +588,7 @@ int benchmark(const std::vector<std::string>& args) {
         ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->spaceInformation(), first);
         const std::string label = (entry.label != entry.name ? entry.label : planner->getName()) + " [" + c->label() + "]";
         c->benchmark->addPlanner(
-            std::make_shared<MeasuredPlanner>(planner, label, [self] { captureQueries(*self); }));
+            std::make_shared<MeasuredPlanner>(planner, label, [self](double seconds) { captureQueries(*self, seconds); }));
       }
       c->benchmark->setPreRunEvent([self, &currentRun, &progress, runCount](const ob::PlannerPtr& planner) {
         // Benchmark has just reset the discrete validator's counters; ours are reset here.
