@@ -24,6 +24,7 @@ OUR_COLUMNS = {
     "checker": "STRING",
     "motion_validator": "STRING",
     "run_index": "INTEGER",
+    "planner_time": "REAL",
     "validity_checks": "INTEGER",
     "clearance_queries": "INTEGER",
     "validity_check_time": "REAL",
@@ -183,6 +184,14 @@ def full_run(adsd, cfg, work):
                   where + ": solved, but solution clearance %r" % r["solution_clearance"])
         check(r["query_time_fraction"] is not None and r["query_time_fraction"] > 0,
               where + ": no query time fraction")
+        # The planner's own solve lies inside OMPL's timing of it, and RRTConnect's queries (one
+        # thread) inside the planner's solve.
+        check(r["planner_time"] is not None and 0 < r["planner_time"] <= r["time"],
+              "%s: planner_time %r, OMPL's time %r" % (where, r["planner_time"], r["time"]))
+        check(r["planner_time"] is not None and
+              r["validity_check_time"] + r["clearance_query_time"] <= r["planner_time"],
+              "%s: query times %r + %r exceed planner_time %r" % (
+                  where, r["validity_check_time"], r["clearance_query_time"], r["planner_time"]))
     for planner, indices in seen.items():
         check(sorted(indices) == list(range(RUNS)), "full run: %s has run indices %s" % (planner, indices))
 
