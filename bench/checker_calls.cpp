@@ -1,26 +1,40 @@
 // bench_checker_calls: what a planner pays per validity check, ours against FCL's, without the
 // planner. For each problem file, both checkers are set up as `adsd plan` sets them up (the
 // environment split into parts, the shared broad phase, our sub-mesh trees or FCL's OBBRSS
-// models), the same seeded uniform states of the problem's space are drawn, and
-// StateValidityChecker::isValid is timed on them in blocks, the two checkers interleaved block by
-// block in alternating order. It isolates the checker's term of the planning rows (issue 6), whose
-// solve times also hold the planner's own work and, for PRM, its threads' timing.
+// models), the same states are drawn, and StateValidityChecker::isValid is timed on them in
+// blocks, the two checkers interleaved block by block in alternating order. It isolates the
+// checker's term of the planning rows (issue 6), whose solve times also hold the planner's own
+// work and, for PRM, its threads' timing.
 //
-//   bench_checker_calls [--states N] [--seed S] PROBLEM.cfg...
+//   bench_checker_calls [--states N] [--seed S] [--from uniform|rrtconnect|prm] PROBLEM.cfg...
+//
+// The states: seeded uniform states of the problem's space (--from uniform, the default), or the
+// states a planner checks, in the order it checks them: the planner solves the problem again and
+// again with FCL's checker, stopping at its first solution as in the planning rows, and every
+// state it hands the checker (motion checks included) is kept until there are N. Uniform states
+// are mostly far from every obstacle; a planner's cluster along its motions, many of them near or
+// in contact, which cost both checkers more and in other proportions.
 //
 // Prints per problem: median microseconds per check over the blocks for each checker, ours ÷ FCL,
 // the share of states each found valid and the number of states on which they disagree (expected
-// 0: uniform states touch an obstacle exactly with probability 0). Exit status 0; 2 on bad usage
-// or a problem that cannot be set up; 3 when the checkers disagree on some state.
+// 0: a state touches an obstacle exactly with probability 0). Exit status 0; 2 on bad usage or a
+// problem that cannot be set up; 3 when the checkers disagree on some state.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <ompl/base/StateValidityChecker.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "adsd/planner/planner_registry.h"
 #include "adsd/planner/planning_problem.h"
 #include "timing.h"
 
@@ -36,23 +50,100 @@ using adsd::planner::PlanningProblem;
 /// enough for many blocks, whose median resists the machine's other load.
 constexpr std::size_t kBlockStates = 1000;
 
+/// Time limit of one solve while states are recorded (seconds): a solve that reaches it still
+/// gave its states.
+constexpr double kRecordingSolveSeconds = 10.0;
+
+/// Solves after which recording stops even with fewer states than asked for (a planner that
+/// checks almost nothing per solve would otherwise loop for long).
+constexpr int kMaxRecordingSolves = 10000;
+
 struct Options {
   std::size_t states = 100000;
   unsigned long seed = 1;
+  std::string from = "uniform";  // or a planner's name
   std::vector<std::string> problems;
 };
 
 [[noreturn]] void usage(const std::string& why) {
-  std::fprintf(stderr, "bench_checker_calls: %s\nusage: bench_checker_calls [--states N] [--seed S] PROBLEM.cfg...\n",
+  std::fprintf(stderr,
+               "bench_checker_calls: %s\nusage: bench_checker_calls [--states N] [--seed S] "
+               "[--from uniform|rrtconnect|prm] PROBLEM.cfg...\n",
                why.c_str());
   std::exit(2);
+}
+
+/// \brief Passes every check to another checker and keeps a copy of each state, up to a limit.
+/// Planners may check from several threads (PRM), hence the lock; its cost is the planner's, and
+/// only the replay is timed.
+class RecordingChecker final : public ompl::base::StateValidityChecker {
+ public:
+  RecordingChecker(const ompl::base::SpaceInformationPtr& si, std::shared_ptr<ompl::base::StateValidityChecker> inner,
+                   std::size_t limit)
+      : ompl::base::StateValidityChecker(si), inner_(std::move(inner)), limit_(limit) {}
+  ~RecordingChecker() override {
+    for (ompl::base::State* s : states_) si_->freeState(s);
+  }
+
+  bool isValid(const ompl::base::State* state) const override {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (states_.size() < limit_) states_.push_back(si_->cloneState(state));
+    }
+    return inner_->isValid(state);
+  }
+  std::size_t recorded() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return states_.size();
+  }
+  /// Hands the recorded states over (the caller frees them).
+  std::vector<ompl::base::State*> take() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::move(states_);
+  }
+
+ private:
+  std::shared_ptr<ompl::base::StateValidityChecker> inner_;
+  std::size_t limit_;
+  mutable std::mutex mutex_;
+  mutable std::vector<ompl::base::State*> states_;
+};
+
+/// The first \p count states \p plannerName checks on \p problem (set up with FCL's checker),
+/// over as many solves as that takes; each solve stops at its first solution.
+std::vector<ompl::base::State*> plannerStates(adsd::planner::PlanningProblem& problem, const std::string& plannerName,
+                                              std::size_t count) {
+  ompl::geometric::SimpleSetup& setup = problem.setup();
+  const auto& si = problem.spaceInformation();
+  auto recorder = std::make_shared<RecordingChecker>(si, problem.checker(), count);
+  setup.setStateValidityChecker(recorder);
+  ompl::base::PlannerPtr planner = adsd::planner::makePlanner(plannerName, si);
+  if (!planner) throw std::runtime_error("no planner named '" + plannerName + "'");
+  setup.setPlanner(planner);
+  // Any path meets the objective, so that optimizing roadmaps (PRM) stop at their first solution,
+  // as in the planning rows (bench/planning/solve_time_ratios.py).
+  setup.getProblemDefinition()->getOptimizationObjective()->setCostThreshold(
+      ompl::base::Cost(std::numeric_limits<double>::infinity()));
+  for (int solve = 0; solve < kMaxRecordingSolves && recorder->recorded() < count; ++solve) {
+    setup.clear();
+    setup.solve(kRecordingSolveSeconds);
+  }
+  setup.setStateValidityChecker(problem.checker());
+  return recorder->take();
 }
 
 Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--states" || arg == "--seed") {
+    if (arg == "--from") {
+      if (i + 1 >= argc) usage("--from needs a value");
+      o.from = argv[++i];
+      const auto& planners = adsd::planner::knownPlannerNames();
+      if (o.from != "uniform" && std::find(planners.begin(), planners.end(), o.from) == planners.end()) {
+        usage("--from: expected uniform or a planner's name (rrtconnect, prm, ...), got '" + o.from + "'");
+      }
+    } else if (arg == "--states" || arg == "--seed") {
       if (i + 1 >= argc) usage(arg + " needs a value");
       char* end = nullptr;
       const unsigned long value = std::strtoul(argv[++i], &end, 10);
@@ -77,9 +168,12 @@ int main(int argc, char** argv) {
   // Once, before OMPL makes any generator: every sampler's seed then follows from it, so a command
   // (its problems in its order) always draws the same states.
   ompl::RNG::setSeed(options.seed);
-  std::printf("Median microseconds per isValid call over blocks of %zu uniform states (%zu states, seed %lu),\n"
+  const bool uniform = options.from == "uniform";
+  std::printf("Median microseconds per isValid call over blocks of %zu states (%zu states, seed %lu): %s;\n"
               "the two checkers interleaved block by block; both share the broad phase over environment parts.\n",
-              kBlockStates, options.states, options.seed);
+              kBlockStates, options.states, options.seed,
+              uniform ? "uniform states"
+                      : ("the states " + options.from + " checks, in its order, solve after solve").c_str());
   std::printf("%-18s %12s %12s %10s %12s %12s\n", "problem", "ours us", "fcl us", "ratio", "valid share", "disagree");
   bool disagreement = false;
   for (const std::string& path : options.problems) {
@@ -91,13 +185,24 @@ int main(int argc, char** argv) {
       PlanningProblem withOurs(file, ours), withFcl(file, fcl);
       const auto& si = withOurs.spaceInformation();
 
-      auto sampler = si->allocStateSampler();
-      const std::size_t blocks = options.states / kBlockStates;
-      std::vector<ompl::base::State*> states(blocks * kBlockStates);
-      for (ompl::base::State*& s : states) {
-        s = si->allocState();
-        sampler->sampleUniform(s);
+      std::vector<ompl::base::State*> states;
+      // Recorded states come from FCL's problem (both problems have the same space, so its states
+      // serve both); each state is freed by the space that allocated it.
+      const ompl::base::SpaceInformationPtr& owner = uniform ? si : withFcl.spaceInformation();
+      if (uniform) {
+        auto sampler = si->allocStateSampler();
+        states.resize(options.states);
+        for (ompl::base::State*& s : states) {
+          s = si->allocState();
+          sampler->sampleUniform(s);
+        }
+      } else {
+        states = plannerStates(withFcl, options.from, options.states);
       }
+      const std::size_t blocks = states.size() / kBlockStates;
+      for (std::size_t i = blocks * kBlockStates; i < states.size(); ++i) owner->freeState(states[i]);
+      states.resize(blocks * kBlockStates);
+      if (blocks == 0) throw std::runtime_error(file.name + ": fewer than " + std::to_string(kBlockStates) + " states");
       std::vector<char> validOurs(states.size()), validFcl(states.size());
       std::vector<double> microsOurs, microsFcl;
       auto runBlock = [&](const PlanningProblem& problem, std::size_t b, std::vector<char>& valid) {
@@ -120,7 +225,7 @@ int main(int argc, char** argv) {
         valid += validOurs[i] != 0;
         differ += validOurs[i] != validFcl[i];
       }
-      for (ompl::base::State* s : states) si->freeState(s);
+      for (ompl::base::State* s : states) owner->freeState(s);
       const double usOurs = median(microsOurs) / kBlockStates, usFcl = median(microsFcl) / kBlockStates;
       std::printf("%-18s %12.3f %12.3f %10.3f %12.3f %12zu\n", file.name.c_str(), usOurs, usFcl, usOurs / usFcl,
                   static_cast<double>(valid) / static_cast<double>(states.size()), differ);
