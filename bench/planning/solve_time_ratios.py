@@ -12,8 +12,9 @@ section with absolute mesh paths and `objective.threshold` so high that any path
 [benchmark] section (--time, one run, no simplification) and a [planner] section listing
 --planners. Then, for each run r and each checker C (the order alternating run by run), runs
   adsd benchmark OUT/cfgs/PROBLEM.cfg --checker C --motion discrete --runs 1 --seed SEED+r
-                 --out OUT/PROBLEM/placeP-C-r --no-plots
-and reads the database ompl_benchmark_statistics wrote there. Both checkers' run r start from one
+                 --out OUT/PROBLEM/placeP-C-r --log-only
+then puts all of a problem's logs into OUT/PROBLEM/runs.db with one call of ompl_benchmark_statistics
+and reads them from there. Both checkers' run r start from one
 seed (common random numbers), so a single-threaded planner such as RRTConnect draws the same
 samples with either, and the pair's times differ by the checking alone: far less noise than
 independent runs, whose solve times spread over a factor of ten.
@@ -23,14 +24,21 @@ until the time limit (its solve time is the limit whatever the checker); with a 
 meets, PRM stops at its first solution, as RRTConnect always does. Solve time is then the time to
 a first exact solution, the question a validity checker's speed answers.
 
+Solve time is the planner's own: `planner time`, which adsd benchmark measures from the planner's
+solve call to its return. OMPL's `time` adds the thread of the termination condition that
+Planner::solve(condition, period) starts before the planner and joins after it; that thread sleeps
+in steps of 1 ms, so the join waits up to 1 ms whatever the checker, which on the problems solved
+in 1-2 ms is most of the difference between runs. The ratio of OMPL's `time` is printed too.
+
 Prints (and writes to OUT/solve_times.md) one Markdown row per problem and planner: runs, exact
 solutions found before the time limit, median solve time with each checker (a run without one counts
-as the time limit, as OMPL records it), ours ÷ FCL, and the two checkers' time per validity check
-over all runs (from the runs' validity check counters), ours ÷ FCL, and the share of FCL's solve
-time its checks took. When half or more of a checker's runs found no exact
-solution, its median is the time limit, not a solve time, and the ratio is marked "censored".
-Each ratio of medians comes with a 95 % interval: a percentile bootstrap that resamples the run
-pairs (both checkers' run r together, as they share a seed), 2000 resamples from a fixed seed.
+as the time limit, as OMPL records it), ours ÷ FCL, the same ratio of OMPL's `time`, the two
+checkers' time per validity check over all runs (from the runs' validity check counters), ours ÷
+FCL, and the share of FCL's solve time its checks took. When half or more of a checker's runs found
+no exact solution, its median is the time limit, not a solve time, and the ratio is marked
+"censored". Each ratio of medians comes with a 95 % interval: a percentile bootstrap that resamples
+the run pairs (both checkers' run r together, as they share a seed), 2000 resamples from a fixed
+seed.
 
 --control C runs checker C in both places of every pair (an A/A test): the same command and timing
 with nothing to tell apart, so its ratios and intervals show how far this benchmark's rows move on
@@ -93,13 +101,31 @@ def variant_cfg(source, planners, runs, seconds):
     return "\n".join(out) + "\n"
 
 
-def read_runs(database):
+def read_runs(logs, database):
+    """Every run of LOGS as (index of its log in LOGS, database row), through one call of
+    ompl_benchmark_statistics that writes DATABASE: it makes each log an experiment, numbered in
+    the order given (one call for all logs, as the program's start-up costs more than a short
+    problem's run)."""
+    if os.path.exists(database):
+        os.remove(database)
+    result = subprocess.run(["ompl_benchmark_statistics"] + logs + ["-d", database],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if result.returncode != 0:
+        sys.stderr.write(result.stderr)
+        sys.exit("solve_time_ratios.py: ompl_benchmark_statistics failed on %d logs (exit %d)" % (
+            len(logs), result.returncode))
     connection = sqlite3.connect("file:%s?mode=ro" % database, uri=True)
     try:
-        return connection.execute(
-            "SELECT plannerConfigs.name, runs.time, runs.solved, runs.approximate_solution, "
-            "runs.validity_checks, runs.validity_check_time FROM runs "
+        experiments = [row[0] for row in connection.execute("SELECT id FROM experiments ORDER BY id")]
+        if len(experiments) != len(logs):
+            sys.exit("solve_time_ratios.py: %s holds %d experiments for %d logs" % (
+                database, len(experiments), len(logs)))
+        index = {experiment: i for i, experiment in enumerate(experiments)}
+        rows = connection.execute(
+            "SELECT runs.experimentid, plannerConfigs.name, runs.time, runs.planner_time, runs.solved, "
+            "runs.approximate_solution, runs.validity_checks, runs.validity_check_time FROM runs "
             "JOIN plannerConfigs ON runs.plannerid = plannerConfigs.id ORDER BY runs.id").fetchall()
+        return [(index[row[0]], row[1:]) for row in rows]
     finally:
         connection.close()
 
@@ -120,10 +146,10 @@ def bootstrap_interval(first, second, resamples=2000):
 
 def rows_for(problem, runs, seconds):
     """One row per planner: (problem, planner, runs, exact solutions per place, medians, ratio, its
-    interval, censored, per-check ratio). RUNS: (place, r, database row), place 0 for the checker
-    under test (ours) and 1 for the reference (FCL's)."""
+    interval, censored, OMPL time's ratio and interval, per-check ratio, checks' share). RUNS: (place,
+    r, database row), place 0 for the checker under test (ours) and 1 for the reference (FCL's)."""
     groups = {}
-    for place, r, (name, elapsed, solved, approximate, checks, check_time) in runs:
+    for place, r, (name, elapsed, planner_elapsed, solved, approximate, checks, check_time) in runs:
         m = COMBINATION.match(name)
         if not m:
             continue
@@ -131,7 +157,8 @@ def rows_for(problem, runs, seconds):
         # stopped it, after as long as an unsolved run took).
         exact = bool(solved) and not bool(approximate) and elapsed < seconds
         groups.setdefault(m.group("label"), ({}, {}))[place][r] = (
-            elapsed if exact else max(elapsed, seconds), exact, checks or 0, check_time or 0.0)
+            planner_elapsed if exact else max(planner_elapsed, seconds), exact, checks or 0, check_time or 0.0,
+            elapsed if exact else max(elapsed, seconds))
     rows = []
     for label, (tested, reference) in groups.items():
         paired = sorted(set(tested) & set(reference))
@@ -151,12 +178,14 @@ def rows_for(problem, runs, seconds):
 
         ratio = median_time(ours) / median_time(fcl)
         low, high = bootstrap_interval([r[0] for r in ours], [r[0] for r in fcl])
+        ompl_ratio = statistics.median(r[4] for r in ours) / statistics.median(r[4] for r in fcl)
+        ompl_interval = bootstrap_interval([r[4] for r in ours], [r[4] for r in fcl])
         # What share of the reference's solve time its checks took (both summed over the runs):
         # the same checks at k times the cost each change the solve time by that share times k - 1.
         checking_share = sum(r[3] for r in fcl) / sum(r[0] for r in fcl)
         rows.append((problem, label, len(ours), sum(r[1] for r in ours), sum(r[1] for r in fcl),
                      median_time(ours), median_time(fcl), ratio, (low, high), censored(ours) or censored(fcl),
-                     time_per_check(ours) / time_per_check(fcl), checking_share))
+                     ompl_ratio, ompl_interval, time_per_check(ours) / time_per_check(fcl), checking_share))
     return rows
 
 
@@ -168,23 +197,28 @@ def table(rows, command, control):
     else:
         names = ("ours", "FCL")
         about = ""
-    lines = [about + "Command: `%s`. Median solve time over the runs (a run without an exact solution before the time "
-             "limit counts as the limit); planners stop at their first solution; discrete motion validator. Run r is "
-             "one `adsd benchmark --runs 1 --seed SEED+r` per checker, the two back to back (common random numbers: "
+    lines = [about + "Command: `%s`. Median solve time over the runs: the planner's own (`planner time`: its solve "
+             "call to its return; OMPL's `time` adds up to 1 ms of waiting for its termination-condition thread, "
+             "whose ratio is the column `OMPL time`); a run without an exact solution before the time limit counts "
+             "as the limit. Planners stop at their first solution; discrete motion validator. Run r is one `adsd "
+             "benchmark --runs 1 --seed SEED+r` per checker, the two back to back (common random numbers: "
              "RRTConnect then draws the same samples with either checker; PRM's two threads make its runs differ "
-             "anyway). 95 %% interval: percentile bootstrap of the ratio over the run pairs. Last column: the "
+             "anyway). 95 %% interval: percentile bootstrap of the ratio over the run pairs. Per check: the "
              "checkers' own time per validity check over all runs (the runs' `validity check time` ÷ `validity "
              "checks`), %s ÷ %s: what the checker controls, without the planner's own work and the spread of solve "
              "times. Checks' share: %s's validity check time ÷ its solve time, summed over the runs; making the same "
              "checks at k times the cost per check changes the solve time by that share × (k − 1)." % (
                  command, names[0], names[1], names[1]), "",
-             "| problem | planner | runs | solved in time, {0} | solved in time, {1} | median s, {0} | "
-             "median s, {1} | {0} ÷ {1} | 95 % interval | per check, {0} ÷ {1} | checks' share, {1} |".format(*names),
-             "|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|"]
-    for problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, (low, high), censored, per_check, share in rows:
-        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s | %.3g–%.3g | %.3g | %.2f |" % (
-            problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t,
-            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, low, high, per_check, share))
+             "| problem | planner | runs | solved in time, {0} | solved in time, {1} | median ms, {0} | "
+             "median ms, {1} | {0} ÷ {1} | 95 % interval | OMPL time, {0} ÷ {1} (95 % interval) | "
+             "per check, {0} ÷ {1} | checks' share, {1} |".format(*names),
+             "|---|---|---:|---:|---:|---:|---:|---:|---|---|---:|---:|"]
+    for (problem, label, n, ours_ok, fcl_ok, ours_t, fcl_t, ratio, (low, high), censored, ompl_ratio,
+         (ompl_low, ompl_high), per_check, share) in rows:
+        lines.append("| %s | %s | %d | %d | %d | %.3g | %.3g | %s | %.3g–%.3g | %.3g (%.3g–%.3g) | %.3g | %.2f |" % (
+            problem, label, n, ours_ok, fcl_ok, 1e3 * ours_t, 1e3 * fcl_t,
+            ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, low, high, ompl_ratio, ompl_low, ompl_high,
+            per_check, share))
     if not control:
         lines += ["", "Target (issue 6): ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
     return "\n".join(lines) + "\n"
@@ -225,7 +259,7 @@ def main():
         with open(cfg, "w") as f:
             f.write(variant_cfg(os.path.join(args.problems, problem + ".cfg"), planners, 1, args.time))
         started = time.monotonic()
-        runs = []
+        logs, places_and_runs = [], []
         for r in range(args.runs):
             # Common random numbers: run r of both checkers starts from the same seed, so that a
             # single-threaded planner draws the same samples and builds the same tree with either
@@ -237,12 +271,14 @@ def main():
                 checker = args.control or ("adsd", "fcl")[place]
                 out_dir = os.path.join(args.out, problem, "place%d-%s-%d" % (place, checker, r))
                 command = [args.adsd, "benchmark", cfg, "--checker", checker, "--motion", "discrete",
-                           "--runs", "1", "--seed", str(seed), "--out", out_dir, "--no-plots"]
+                           "--runs", "1", "--seed", str(seed), "--out", out_dir, "--log-only"]
                 result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
                 if result.returncode != 0:
                     sys.stderr.write(result.stderr)
                     sys.exit("solve_time_ratios.py: %s failed (exit %d)" % (" ".join(command), result.returncode))
-                runs += [(place, r, row) for row in read_runs(os.path.join(out_dir, "%s.seed-%d.db" % (problem, seed)))]
+                logs.append(os.path.join(out_dir, "%s.seed-%d.log" % (problem, seed)))
+                places_and_runs.append((place, r))
+        runs = [places_and_runs[i] + (row,) for i, row in read_runs(logs, os.path.join(args.out, problem, "runs.db"))]
         rows += rows_for(problem, runs, args.time)
         print("solve_time_ratios.py: %s done in %.0f s" % (problem, time.monotonic() - started), file=sys.stderr)
 
