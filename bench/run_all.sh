@@ -24,8 +24,10 @@
 #                         time, per stage of the traversal (perf; skipped when perf cannot sample)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
 #                         triangle pairs) per mode beside the time, ours and FCL's (what bounds a ratio)
-#   checker_calls.txt     bench_checker_calls: microseconds per isValid call of each checker on
-#                         uniform states of the planning problems (the checker's term of the planning rows)
+#   checker_calls.txt, checker_calls_rrtconnect.txt, checker_calls_prm.txt
+#                         bench_checker_calls: microseconds per isValid call of each checker on
+#                         the planning problems' uniform states, and on the states RRTConnect and
+#                         PRM check (the checker's term of the planning rows)
 #   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_maze_prm.md,
 #   planning_solve_times_hard.md
 #                         bench/planning/solve_time_ratios.py: issue 6's end-to-end row (RRTConnect
@@ -52,7 +54,7 @@ while [[ $# -gt 0 ]]; do
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
     --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
-    -h|--help) sed -n '2,43p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,45p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
@@ -63,6 +65,14 @@ done
 checker_call_problems() {
   local p="$1/problem_files"
   echo "$p/office.cfg $p/maze.cfg $p/thin_wall.cfg $p/bug_trap.cfg $p/twisted_passage.cfg"
+}
+
+# A planning table's caption: the command that made it, read back from the table's own "Command:"
+# line (which names its options but not the build), with the program and problems of $build.
+planning_caption() {
+  local options
+  options=$(sed -n 's/^.*Command: `bench\/planning\/solve_time_ratios.py \([^`]*\)`.*/\1/p' "$1" | head -1)
+  echo "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files $options"
 }
 
 # Pastes bench/results into the README's blocks (the commands shown are those that made them).
@@ -78,29 +88,26 @@ paste_readme() {
       "bench/profile_modes.py --counters $build/bench/bench_scene_counters --scenes problem_maze,problem_thin_wall,problem_alpha_puzzle,problem_cow_doorway --repeat 50" \
       bench/results/profile_modes_more.md
   fi
-  # The hard problems' run count is --long's or not: read it back from the table's own command.
-  local hard_runs
-  hard_runs=$(sed -n 's/^Command: `[^`]*--runs \([0-9]*\).*/\1/p' bench/results/planning_solve_times_hard.md 2>/dev/null || true)
   if [[ -f bench/results/planning_solve_times.md ]]; then
-    local calls=()  # results from before bench_checker_calls existed have no checker_calls.txt
+    local calls=()  # results from before bench_checker_calls existed have no checker_calls*.txt
     [[ -f bench/results/checker_calls.txt ]] &&
-      calls=("$build/bench/bench_checker_calls $(checker_call_problems "$build")" bench/results/checker_calls.txt)
+      calls+=("$build/bench/bench_checker_calls $(checker_call_problems "$build")" bench/results/checker_calls.txt)
+    local from
+    for from in rrtconnect prm; do
+      [[ -f bench/results/checker_calls_$from.txt ]] &&
+        calls+=("$build/bench/bench_checker_calls --from $from $(checker_call_problems "$build")"
+                bench/results/checker_calls_$from.txt)
+    done
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning "${calls[@]}" \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall" \
-      bench/results/planning_solve_times.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only maze --planners rrtconnect" \
-      bench/results/planning_solve_times_maze.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 5 --time 5 --only maze --planners prm" \
-      bench/results/planning_solve_times_maze_prm.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs $hard_runs --time 10 --only bug_trap,twisted_passage" \
-      bench/results/planning_solve_times_hard.md
+      "$(planning_caption bench/results/planning_solve_times.md)" bench/results/planning_solve_times.md \
+      "$(planning_caption bench/results/planning_solve_times_maze.md)" bench/results/planning_solve_times_maze.md \
+      "$(planning_caption bench/results/planning_solve_times_maze_prm.md)" bench/results/planning_solve_times_maze_prm.md \
+      "$(planning_caption bench/results/planning_solve_times_hard.md)" bench/results/planning_solve_times_hard.md
   fi
   if [[ -f bench/results/planning_control.md ]]; then
     /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 5 --only office,thin_wall --control fcl" \
-      bench/results/planning_control.md \
-      "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --runs 40 --time 10 --only bug_trap,twisted_passage --control fcl" \
-      bench/results/planning_control_hard.md
+      "$(planning_caption bench/results/planning_control.md)" bench/results/planning_control.md \
+      "$(planning_caption bench/results/planning_control_hard.md)" bench/results/planning_control_hard.md
   fi
 }
 if [[ $paste_only -eq 1 ]]; then
@@ -149,6 +156,10 @@ sed -i "s#$staging/#bench/results/#g; s#--out $staging#--out bench/results#" "$s
 step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
 step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
 step checker_calls sh -c "'$build/bench/bench_checker_calls' $(checker_call_problems "$build") > '$staging/checker_calls.txt'"
+for from in rrtconnect prm; do
+  step checker_calls_$from sh -c "'$build/bench/bench_checker_calls' --from $from $(checker_call_problems "$build") \
+    > '$staging/checker_calls_$from.txt'"
+done
 # perf may be installed yet not allowed to sample (kernel.perf_event_paranoid, containers): try it.
 if command -v perf >/dev/null && perf record -q -o "$staging/perf-probe.data" true >/dev/null 2>&1; then
   rm -f "$staging/perf-probe.data"
@@ -164,34 +175,36 @@ else
   cp bench/results/profile_modes*.md "$staging/" 2>/dev/null || true
 fi
 if [[ $planning -eq 1 ]]; then
-  # Forty runs per problem, planner and checker (twenty on the bug trap and the twisted passage
-  # without --long, whose runs take seconds): solve times spread over a factor of a hundred
-  # between seeds, and with five or ten runs the median was one pair's ratio (the bug trap's
-  # RRTConnect row read 0.88 in one run of this script and 1.11 in the next, with the same core).
-  # PRM's runs are not paired (its two threads), and with twenty its rows' 95 % intervals spanned
-  # 0.5-1.6 on the bug trap and the twisted passage, with FCL's checker in both places too.
-  # The maze's PRM row gets five: it is censored (neither checker solves it within 5 s) and costs
-  # the time limit per run. The cow doorway and the alpha puzzle are left out: RRTConnect and PRM
-  # rarely solve them within a minute with either checker (problems/README.md), so their medians
-  # would be the time limit, not a solve time.
+  # Solve times spread over a factor of a hundred between seeds, and PRM's runs are not paired
+  # (its two threads), so a row needs many runs: with five or ten the median was one pair's ratio
+  # (the bug trap's RRTConnect row read 0.88 in one run of this script and 1.11 in the next, with
+  # the same core), and with forty the office's PRM interval spanned 0.87-1.33. Two hundred on the
+  # problems solved in milliseconds (about a minute each); on the bug trap and the twisted passage,
+  # whose runs take seconds, twenty, forty with --long. The maze's PRM row gets five: it is
+  # censored (neither checker solves it within 5 s) and costs the time limit per run. The cow
+  # doorway and the alpha puzzle are left out: RRTConnect and PRM rarely solve them within a
+  # minute with either checker (problems/README.md), so their medians would be the time limit,
+  # not a solve time.
+  fast_runs=200 hard_runs=$((long ? 40 : 20))
   planning_work=$staging/planning
   step planning /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/fast" --runs 40 --time 5 --only office,thin_wall
+    --problems "$build/problem_files" --out "$planning_work/fast" --runs $fast_runs --time 5 --only office,thin_wall
   step planning_maze /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/maze" --runs 40 --time 5 --only maze --planners rrtconnect
+    --problems "$build/problem_files" --out "$planning_work/maze" --runs $fast_runs --time 5 --only maze \
+    --planners rrtconnect
   step planning_maze_prm /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
     --problems "$build/problem_files" --out "$planning_work/maze_prm" --runs 5 --time 5 --only maze --planners prm
   step planning_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-    --problems "$build/problem_files" --out "$planning_work/hard" --runs $((long ? 40 : 20)) --time 10 \
+    --problems "$build/problem_files" --out "$planning_work/hard" --runs $hard_runs --time 10 \
     --only bug_trap,twisted_passage
   if [[ $long -eq 1 ]]; then
     # The control: FCL's checker against itself, same commands. Its ratios should be 1; how far
     # they are not, with their intervals, is the noise the rows above must be read against.
     step planning_control /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-      --problems "$build/problem_files" --out "$planning_work/control" --runs 40 --time 5 --only office,thin_wall \
-      --control fcl
+      --problems "$build/problem_files" --out "$planning_work/control" --runs $fast_runs --time 5 \
+      --only office,thin_wall --control fcl
     step planning_control_hard /usr/bin/python3 bench/planning/solve_time_ratios.py --adsd "$build/planner/app/adsd" \
-      --problems "$build/problem_files" --out "$planning_work/control_hard" --runs 40 --time 10 \
+      --problems "$build/problem_files" --out "$planning_work/control_hard" --runs $hard_runs --time 10 \
       --only bug_trap,twisted_passage --control fcl
     cp "$planning_work/control/solve_times.md" "$staging/planning_control.md"
     cp "$planning_work/control_hard/solve_times.md" "$staging/planning_control_hard.md"
