@@ -76,6 +76,16 @@ planning_caption() {
   echo "bench/planning/solve_time_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files $options"
 }
 
+# Sets `tables` to each named planning table of bench/results (NAME.md) after its caption, the
+# arguments update_readme.py takes.
+planning_tables() {
+  tables=()
+  local name
+  for name in "$@"; do
+    tables+=("$(planning_caption "bench/results/$name.md")" "bench/results/$name.md")
+  done
+}
+
 # Pastes bench/results into the README's blocks (the commands shown are those that made them).
 paste_readme() {
   /usr/bin/python3 bench/update_readme.py "$readme_file" speed \
@@ -99,16 +109,13 @@ paste_readme() {
         calls+=("$build/bench/bench_checker_calls --from $from $(checker_call_problems "$build")"
                 bench/results/checker_calls_$from.txt)
     done
-    /usr/bin/python3 bench/update_readme.py "$readme_file" planning "${calls[@]}" \
-      "$(planning_caption bench/results/planning_solve_times.md)" bench/results/planning_solve_times.md \
-      "$(planning_caption bench/results/planning_solve_times_maze.md)" bench/results/planning_solve_times_maze.md \
-      "$(planning_caption bench/results/planning_solve_times_maze_prm.md)" bench/results/planning_solve_times_maze_prm.md \
-      "$(planning_caption bench/results/planning_solve_times_hard.md)" bench/results/planning_solve_times_hard.md
+    planning_tables planning_solve_times planning_solve_times_maze planning_solve_times_maze_prm \
+      planning_solve_times_hard
+    /usr/bin/python3 bench/update_readme.py "$readme_file" planning "${calls[@]}" "${tables[@]}"
   fi
   if [[ -f bench/results/planning_control.md ]]; then
-    /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control \
-      "$(planning_caption bench/results/planning_control.md)" bench/results/planning_control.md \
-      "$(planning_caption bench/results/planning_control_hard.md)" bench/results/planning_control_hard.md
+    planning_tables planning_control planning_control_hard
+    /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control "${tables[@]}"
   fi
 }
 if [[ $paste_only -eq 1 ]]; then
