@@ -116,11 +116,13 @@ def read_runs(logs, database):
             len(logs), result.returncode))
     connection = sqlite3.connect("file:%s?mode=ro" % database, uri=True)
     try:
-        experiments = [row[0] for row in connection.execute("SELECT id FROM experiments ORDER BY id")]
-        if len(experiments) != len(logs):
-            sys.exit("solve_time_ratios.py: %s holds %d experiments for %d logs" % (
-                database, len(experiments), len(logs)))
-        index = {experiment: i for i, experiment in enumerate(experiments)}
+        experiments = connection.execute("SELECT id, seed FROM experiments ORDER BY id").fetchall()
+        # Each log is named STEM.seed-S.log after the seed it ran with, which its experiment records.
+        if len(experiments) != len(logs) or any(
+                not log.endswith(".seed-%s.log" % seed) for log, (_, seed) in zip(logs, experiments)):
+            sys.exit("solve_time_ratios.py: the experiments of %s do not match its %d logs in order" % (
+                database, len(logs)))
+        index = {experiment: i for i, (experiment, _) in enumerate(experiments)}
         rows = connection.execute(
             "SELECT runs.experimentid, plannerConfigs.name, runs.time, runs.planner_time, runs.solved, "
             "runs.approximate_solution, runs.validity_checks, runs.validity_check_time FROM runs "
