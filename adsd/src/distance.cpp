@@ -219,7 +219,7 @@ DistanceResult Query::run() {
     // would work out per query, so every mode runs the box-and-triangle traversal of
     // tree_traversal.cpp (sec. 6.2's rejection rule on node pairs). Measured against FCL's
     // prebuilt distance on the benchmark's 11 rigid scenes (bench_scenes): exact queries below
-    // FCL's time on all 11 this way (0.15-0.83, bench/results/ratios.md); with GJK and hashing
+    // FCL's time on all 11 this way (0.14-0.78, bench/results/ratios.md); with GJK and hashing
     // on node pairs, on 3 of them when that path was last measured.
     traverseTrees();
     return finish();
