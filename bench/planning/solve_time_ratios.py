@@ -46,6 +46,7 @@ their own, which a real difference must exceed.
 Exit status: 0; 1 when adsd benchmark fails; 2 on bad usage.
 """
 import argparse
+import collections
 import os
 import random
 import re
@@ -146,6 +147,11 @@ def bootstrap_interval(first, second, resamples=2000):
     return ratios[int(0.025 * resamples)], ratios[int(0.975 * resamples) - 1]
 
 
+# One run as the rows use it: solve time (the planner's own; the time limit when it found no exact
+# solution in time), OMPL's time (the same way), whether it solved, its validity checks and their time.
+Run = collections.namedtuple("Run", "solve ompl exact checks check_time")
+
+
 def rows_for(problem, runs, seconds):
     """One row per planner: (problem, planner, runs, exact solutions per place, medians, ratio, its
     interval, censored, OMPL time's ratio and interval, per-check ratio, checks' share). RUNS: (place,
@@ -158,9 +164,10 @@ def rows_for(problem, runs, seconds):
         # Solved: an exact solution before the time limit (PRM can report one found as the limit
         # stopped it, after as long as an unsolved run took).
         exact = bool(solved) and not bool(approximate) and elapsed < seconds
-        groups.setdefault(m.group("label"), ({}, {}))[place][r] = (
-            planner_elapsed if exact else max(planner_elapsed, seconds), exact, checks or 0, check_time or 0.0,
-            elapsed if exact else max(elapsed, seconds))
+        groups.setdefault(m.group("label"), ({}, {}))[place][r] = Run(
+            solve=planner_elapsed if exact else max(planner_elapsed, seconds),
+            ompl=elapsed if exact else max(elapsed, seconds),
+            exact=exact, checks=checks or 0, check_time=check_time or 0.0)
     rows = []
     for label, (tested, reference) in groups.items():
         paired = sorted(set(tested) & set(reference))
@@ -168,26 +175,27 @@ def rows_for(problem, runs, seconds):
             continue
         ours, fcl = [tested[r] for r in paired], [reference[r] for r in paired]
 
-        def median_time(rs):
-            return statistics.median(r[0] for r in rs)
+        def times(rs, field):
+            return [getattr(r, field) for r in rs]
 
         def censored(rs):
-            return 2 * sum(1 for r in rs if r[1]) <= len(rs)
+            return 2 * sum(1 for r in rs if r.exact) <= len(rs)
 
         def time_per_check(rs):
-            checks = sum(r[2] for r in rs)
-            return sum(r[3] for r in rs) / checks if checks else float("nan")
+            checks = sum(r.checks for r in rs)
+            return sum(r.check_time for r in rs) / checks if checks else float("nan")
 
-        ratio = median_time(ours) / median_time(fcl)
-        low, high = bootstrap_interval([r[0] for r in ours], [r[0] for r in fcl])
-        ompl_ratio = statistics.median(r[4] for r in ours) / statistics.median(r[4] for r in fcl)
-        ompl_interval = bootstrap_interval([r[4] for r in ours], [r[4] for r in fcl])
+        ratio = statistics.median(times(ours, "solve")) / statistics.median(times(fcl, "solve"))
+        interval = bootstrap_interval(times(ours, "solve"), times(fcl, "solve"))
+        ompl_ratio = statistics.median(times(ours, "ompl")) / statistics.median(times(fcl, "ompl"))
+        ompl_interval = bootstrap_interval(times(ours, "ompl"), times(fcl, "ompl"))
         # What share of the reference's solve time its checks took (both summed over the runs):
         # the same checks at k times the cost each change the solve time by that share times k - 1.
-        checking_share = sum(r[3] for r in fcl) / sum(r[0] for r in fcl)
-        rows.append((problem, label, len(ours), sum(r[1] for r in ours), sum(r[1] for r in fcl),
-                     median_time(ours), median_time(fcl), ratio, (low, high), censored(ours) or censored(fcl),
-                     ompl_ratio, ompl_interval, time_per_check(ours) / time_per_check(fcl), checking_share))
+        checking_share = sum(r.check_time for r in fcl) / sum(r.solve for r in fcl)
+        rows.append((problem, label, len(ours), sum(r.exact for r in ours), sum(r.exact for r in fcl),
+                     statistics.median(times(ours, "solve")), statistics.median(times(fcl, "solve")), ratio,
+                     interval, censored(ours) or censored(fcl), ompl_ratio, ompl_interval,
+                     time_per_check(ours) / time_per_check(fcl), checking_share))
     return rows
 
 
