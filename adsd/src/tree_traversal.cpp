@@ -195,10 +195,11 @@ void Query::traverseTrees() {
     // A validity query compares the roots' circumscribed spheres only and leaves the separating
     // axes to the children. Its callers ask about pairs a broad phase could not drop, whose whole
     // boxes nearly always overlap: 99.5 % of the office's pair queries on the states PRM checks
-    // (bench_checker_calls --from prm). There the roots' full test (all 15 axes, as none
-    // separates) decided nothing; leaving it out, and placing only B's root centre, took a pair
-    // query from 3 910 to 3 080 instructions (callgrind over 20 000 recorded PRM states, about
-    // 81 700 pair queries: PRM's threads make two recordings differ slightly).
+    // (bench_checker_calls --from prm; counted in session 7 with a temporary counter). There the
+    // roots' full test (all 15 axes, as none separates) decided nothing; leaving it out, and
+    // placing only B's root centre, took a pair query from 3 950 to 3 070 instructions (callgrind
+    // over 20 000 recorded PRM states, about 81 800 pair queries: PRM's threads make two
+    // recordings differ slightly; README, planning).
     ++counters_.subMeshPairs;
     const double sphereGap = (toA(nodesB[0].box.center) - nodesA[0].box.center).norm() - nodesA[0].box.radius -
                              nodesB[0].box.radius;
