@@ -15,8 +15,11 @@
 
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
-#include "adsd/planner/fcl_validity_checker.h"
+#include "adsd/planner/features.h"
 #include "adsd/planner/mesh_validity_checker.h"
+#if ADSD_PLANNER_HAS_FCL
+#include "adsd/planner/fcl_validity_checker.h"
+#endif
 #include "adsd/planner/state_pose.h"
 
 namespace adsd::planner {
@@ -132,7 +135,11 @@ void PlanningProblem::build(const Pose& start, const Pose& goal, const std::opti
   const ob::SpaceInformationPtr& si = setup_->getSpaceInformation();
 
   if (options_.checker == CheckerKind::fcl) {
+#if ADSD_PLANNER_HAS_FCL
     checker_ = std::make_shared<FclValidityChecker>(si, scene_, options_.safetyMargin);
+#else
+    throw InputError("checker 'fcl': this build of adsd has no FCL (libfcl-dev was not found when it was configured)");
+#endif
   } else {
     checker_ = std::make_shared<MeshValidityChecker>(si, scene_, options_.safetyMargin, options_.clearance);
   }

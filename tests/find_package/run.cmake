@@ -1,13 +1,28 @@
-# Installs the build into a fresh prefix, then configures, builds and runs the consumer project
-# against it (fmt's find-package test, for us). Arguments: BUILD_DIR, SOURCE_DIR, WORK_DIR.
+# Installs the build into a fresh prefix, checks that no installed file names the build or source
+# tree, then configures, builds and runs the consumer project against it (fmt's find-package test,
+# for us). Arguments: BUILD_DIR, SOURCE_DIR (the consumer), PROJECT_SOURCE_DIR, WORK_DIR,
+# WITH_PLANNER (ON/OFF).
 file(REMOVE_RECURSE "${WORK_DIR}")
 execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix"
                 RESULT_VARIABLE rc OUTPUT_QUIET)
 if(rc)
   message(FATAL_ERROR "install failed: ${rc}")
 endif()
+
+# An install must work after the trees it came from are gone: no file in it may name them.
+file(GLOB_RECURSE installed LIST_DIRECTORIES false "${WORK_DIR}/prefix/*")
+foreach(f IN LISTS installed)
+  foreach(tree IN ITEMS "${BUILD_DIR}" "${PROJECT_SOURCE_DIR}")
+    file(STRINGS "${f}" hits REGEX "${tree}")
+    if(hits)
+      message(FATAL_ERROR "${f} names ${tree}")
+    endif()
+  endforeach()
+endforeach()
+
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/build"
                         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release
+                        "-DWITH_PLANNER=${WITH_PLANNER}"
                 RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "configuring the consumer failed: ${rc}")
@@ -19,4 +34,10 @@ endif()
 execute_process(COMMAND "${WORK_DIR}/build/consumer" RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the consumer answered wrongly: ${rc}")
+endif()
+if(WITH_PLANNER)
+  execute_process(COMMAND "${WORK_DIR}/build/plan_with_ompl" RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "the OMPL program did not plan a valid path with adsd's checker: ${rc}")
+  endif()
 endif()

@@ -11,7 +11,10 @@
 
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
+#include "adsd/planner/features.h"
+#if ADSD_PLANNER_HAS_FCL
 #include "adsd/planner/fcl_validity_checker.h"
+#endif
 #include "adsd/planner/mesh_validity_checker.h"
 #include "adsd/shapes.h"
 #include "oracle.h"
@@ -54,7 +57,9 @@ int stateCount(int fallback) {
 void compareWithOracle(const SceneFixture& f, int defaultStates, std::uint64_t seed) {
   const int states = stateCount(defaultStates);
   auto ours = std::make_shared<MeshValidityChecker>(f.si, f.scene);
+#if ADSD_PLANNER_HAS_FCL
   auto fcl = std::make_shared<FclValidityChecker>(f.si, f.scene);
+#endif
   const double tolerance = kClearanceAccuracy * ours->scale();
   PoseSampler sampler(f, seed);
   ompl::base::ScopedState<> state(f.si);
@@ -93,6 +98,7 @@ void compareWithOracle(const SceneFixture& f, int defaultStates, std::uint64_t s
       ++ambiguous;  // touching within rounding: either answer is right
     }
 
+#if ADSD_PLANNER_HAS_FCL
     // FCL, side by side: recorded, and held to a looser bound (its GJK stops at its own tolerance).
     const double fclClearance = fcl->clearance(state.get());
     const bool fclValid = fcl->isValid(state.get());
@@ -105,6 +111,7 @@ void compareWithOracle(const SceneFixture& f, int defaultStates, std::uint64_t s
       std::printf("[fcl vs oracle] %s state %d: fcl clearance %.17g valid %d, oracle %.17g intersecting %d\n",
                   f.name.c_str(), i, fclClearance, fclValid, truth.distance, truth.intersecting);
     }
+#endif
   }
   std::printf("[%s] %d states: %d valid, %d colliding, %d touching within rounding; FCL disagreed on %d\n",
               f.name.c_str(), states, valid, colliding, ambiguous, fclDisagreements);
@@ -282,17 +289,23 @@ TEST(CheckerSettings, SafetyMarginMakesNearStatesInvalid) {
   const SceneFixture f = test::thinWallFixture();
   MeshValidityChecker plain(f.si, f.scene);
   MeshValidityChecker careful(f.si, f.scene, 0.1);
+#if ADSD_PLANNER_HAS_FCL
   FclValidityChecker fclCareful(f.si, f.scene, 0.1);
+#endif
   ompl::base::ScopedState<ompl::base::SE2StateSpace> s(f.si);
   s->setXY(-0.06, -1.0);  // the bar's face is 0.04 from the wall's
   s->setYaw(0.0);
   EXPECT_NEAR(plain.clearance(s.get()), 0.04, 1e-12);
   EXPECT_TRUE(plain.isValid(s.get()));
   EXPECT_FALSE(careful.isValid(s.get()));
+#if ADSD_PLANNER_HAS_FCL
   EXPECT_FALSE(fclCareful.isValid(s.get()));
+#endif
   s->setXY(-0.2, -1.0);
   EXPECT_TRUE(careful.isValid(s.get()));
+#if ADSD_PLANNER_HAS_FCL
   EXPECT_TRUE(fclCareful.isValid(s.get()));
+#endif
 }
 
 TEST(CheckerSettings, OutOfBoundsStatesAreInvalid) {

@@ -5,7 +5,10 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 
 #include "adsd/planner/certified_motion_validator.h"
+#include "adsd/planner/features.h"
+#if ADSD_PLANNER_HAS_FCL
 #include "adsd/planner/fcl_validity_checker.h"
+#endif
 #include "adsd/planner/mesh_validity_checker.h"
 #include "oracle.h"
 #include "scene_fixtures.h"
@@ -90,7 +93,9 @@ void thinWallCrossing(const char* label) {
 TEST(CertifiedMotion, RejectsTheThinWallCrossingThatTheDiscreteCheckAccepts) {
   thinWallCrossing<MeshValidityChecker>("adsd");
 }
+#if ADSD_PLANNER_HAS_FCL
 TEST(CertifiedMotion, RejectsTheThinWallCrossingWithFclToo) { thinWallCrossing<FclValidityChecker>("fcl"); }
+#endif
 
 /// Random motions between valid states: every accepted motion is free of collision at dense
 /// samples checked by the oracle; report how the two validators compare.

@@ -21,6 +21,7 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/Console.h>
 
+#include "adsd/planner/features.h"
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
@@ -135,7 +136,9 @@ void planAndWalk(const std::string& cfg, CheckerKind checker) {
 
 TEST(SolutionPathsVersusOracle, CertifiedPathsThroughTheThinWallScene) {
   planAndWalk("thin_wall.cfg", CheckerKind::adsd);
+#if ADSD_PLANNER_HAS_FCL
   planAndWalk("thin_wall.cfg", CheckerKind::fcl);
+#endif
 }
 TEST(SolutionPathsVersusOracle, CertifiedPathsInTheOffice) { planAndWalk("office.cfg", CheckerKind::adsd); }
 TEST(SolutionPathsVersusOracle, CertifiedPathsInTheMaze) { planAndWalk("maze.cfg", CheckerKind::adsd); }
