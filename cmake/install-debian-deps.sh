@@ -15,6 +15,8 @@ packages=(
   # Sanitizer and fuzzing builds (issue 7), plots, sharded benchmarks, fetching real meshes, and
   # perf for the benchmarks' profile (bench/profile_modes.py).
   clang libclang-rt-14-dev python3-matplotlib parallel sqlite3 linux-perf
+  # A one-node Slurm cluster for the sharded benchmark's test (bench/planning/slurm_local_cluster.sh).
+  slurm-wlm munge
 )
 # npm (for the npm meshes): only when there is none, as Node.js from elsewhere ships its own and
 # conflicts with Debian's npm package.

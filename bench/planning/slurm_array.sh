@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `adsd benchmark` as a Slurm array job: one shard per array task, then one job that merges the
-# shards' logs into a database and plots it. (Written for clusters; not run on the team's machine.)
+# shards' logs into a database and plots it. bench/planning/slurm_local_cluster.sh runs it on a
+# one-node Slurm started on this machine (the test slurm_local_cluster).
 #
 # On the login node, from a checkout with a built adsd:
 #   bench/planning/slurm_array.sh submit PROBLEM.cfg RUNS SHARDS OUT_DIR [adsd benchmark options...]
