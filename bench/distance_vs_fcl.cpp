@@ -222,7 +222,7 @@ int run(const Options& options) {
   const double oursMedian = adsd::bench::median(methods[0].micros);
   const double builtMedian = adsd::bench::median(methods[1].micros);
   const double prebuiltMedian = adsd::bench::median(methods[2].micros);
-  std::printf("\nratio ours / fcl(build+distance), medians: %.4f   (issue 2 asks <= 0.2)\n", oursMedian / builtMedian);
+  std::printf("\nratio ours / fcl(build+distance), medians: %.4f   (target <= 0.2)\n", oursMedian / builtMedian);
   std::printf("ratio ours / fcl(prebuilt distance), medians: %.4f\n", oursMedian / prebuiltMedian);
   std::printf("ratio ours / fcl(build+distance), means (total time): %.4f\n",
               sum(methods[0].micros) / sum(methods[1].micros));

@@ -32,7 +32,7 @@ def main(path):
               f"| {ratio(s, 'ours_tree_threshold', 'fcl_collide')} | {ratio(s, 'ours_tol_1e-02', 'ours_exact')} "
               f"| {ratio(s, 'ours_tree_tol_1e-02', 'ours_tree_exact')} |")
     print()
-    print("Targets (issue 6): deforming ≤ 0.1 against FCL rebuild or refit; rigid exact clearance ≤ 1.0 against FCL"
+    print("Targets: deforming ≤ 0.1 against FCL rebuild or refit; rigid exact clearance ≤ 1.0 against FCL"
           " prebuilt; validity ≤ 1.0 against FCL collide (our threshold query at D = 0, the same question; the"
           " 1 % threshold column asks another question, which FCL has no query for, and is shown for reference); 1 % tolerance ≤ 0.3"
           " of exact.")
@@ -42,7 +42,7 @@ def main(path):
 
 def in_words(rows, order):
     """The table above in sentences: ranges and the scenes on either side of 1, computed here so
-    that the README's prose changes with the figures."""
+    that the docs' prose changes with the figures."""
     def values(num, den, scenes):
         out = {}
         for s in scenes:

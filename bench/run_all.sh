@@ -1,26 +1,26 @@
 #!/usr/bin/env bash
-# Every benchmark behind the README's figures, in one command, and the README's result blocks
-# pasted from their output (issue 5: "one command produces the CSV, the tables and the plots").
+# Every benchmark behind the docs' figures, in one command, and the result blocks of
+# docs/benchmarks.md and the README's headline table pasted from their output (one command
+# produces the CSV, the tables and the plots).
 #
-#   bench/run_all.sh [BUILD_DIR] [--long] [--no-readme] [--no-planning] [--paste-only] [--readme FILE]
+#   bench/run_all.sh [BUILD_DIR] [--long] [--no-paste] [--no-planning] [--paste-only] [--page FILE]
 #
-# About 10 minutes on an idle 2-core machine (issue 5 asks for under 15; session 7's --long run's
-# steps, with the bug trap's and twisted passage's at half their time, add up to 610 s). --long:
-# 40 runs instead of 20 on the bug trap and the twisted passage, and the controls (FCL's checker
-# against itself), 25-30 minutes (session 6: 1 819 s; session 7: 1 509 s); the README's planning
-# figures come from it (PRM's rows need the runs and the control, see the README's planning
-# section).
-# --paste-only: run nothing, paste bench/results into the README's blocks again; --readme FILE:
-# paste into FILE instead of README.md (same layout).
+# About 10 minutes on an idle 2-core machine (the target is under 15). --long: 40 runs instead
+# of 20 on the bug trap and the twisted passage, and the controls (FCL's checker against itself),
+# 25-30 minutes; the planning figures of docs/benchmarks.md come from it (PRM's rows need the runs
+# and the control, see its planning section). Each step's time is in bench/results/run_all.log.
+# --paste-only: run nothing, paste bench/results into the blocks again; --page FILE: paste the
+# benchmark blocks into FILE instead of docs/benchmarks.md (same layout); --no-paste: paste nothing.
+# (--readme FILE and --no-readme are the old names of --page and --no-paste.)
 #
 # BUILD_DIR (default: build) must hold a Release build of the targets
 #   bench_distance_vs_fcl bench_scenes bench_scene_counters bench_checker_calls adsd adsd_problems
 # and the real meshes must be cached (problems/data/fetch_meshes.sh). Writes bench/results/:
-#   distance_vs_fcl.txt   bench_distance_vs_fcl (issue 2: cow x cow from scratch against FCL)
+#   distance_vs_fcl.txt   bench_distance_vs_fcl (cow x cow from scratch against FCL)
 #   scenes.csv, scenes.md, table1.md, time_vs_error.png, time_vs_triangles.png
 #                         bench_scenes: every scene, every method, against the oracle
 #   scenes.txt            what bench_scenes printed (per scene: checksums beside the oracle's)
-#   ratios.md             bench/ratio_summary.py: issue 6's distance ratios from scenes.csv
+#   ratios.md             bench/ratio_summary.py: the distance ratios against FCL from scenes.csv
 #   profile_modes.md      bench/profile_modes.py: where exact and 1 % tolerance queries spend their
 #                         time, per stage of the traversal (perf; skipped when perf cannot sample)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
@@ -31,30 +31,30 @@
 #                         PRM check (the checker's term of the planning rows)
 #   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_maze_prm.md,
 #   planning_solve_times_hard.md
-#                         bench/planning/solve_time_ratios.py: issue 6's end-to-end row (RRTConnect
+#                         bench/planning/solve_time_ratios.py: the end-to-end rows (RRTConnect
 #                         and PRM, median solve time with our checker and FCL's, interleaved)
 #   planning_control.md, planning_control_hard.md (--long only)
 #                         the same with FCL's checker in both places (--control fcl): how far
 #                         those rows move when nothing differs
 #   run_all.log           what each step printed on stderr, and its time
-# then bench/update_readme.py pastes them into README.md's blocks `speed`, `profile`, `planning`
-# and `planning_control`.
+# then bench/paste_results.py pastes them into docs/benchmarks.md's blocks `speed`, `profile`,
+# `planning` and `planning_control`, and a few rows of ratios.md into README.md's block `headline`.
 # Each step writes into a temporary directory that replaces bench/results only when every step
-# succeeded, so a failed run leaves the last good results and the README as they were.
+# succeeded, so a failed run leaves the last good results and the pages as they were.
 # Exit status: the first failing step's (bench_scenes: 3 when an answer disagrees with the oracle).
-# Do not edit this script or bench/ while it runs: bash reads a script as it goes (a run in session
-# 6 failed at its last step that way), and each step runs the bench programs and scripts afresh.
+# Do not edit this script or bench/ while it runs: bash reads a script as it goes, and each step
+# runs the bench programs and scripts afresh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-build=build readme=1 planning=1 paste_only=0 readme_file=README.md long=0
+build=build paste=1 planning=1 paste_only=0 page=docs/benchmarks.md long=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
-    --no-readme) readme=0 ;;
+    --no-paste|--no-readme) paste=0 ;;
     --no-planning) planning=0 ;;
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
-    --readme) [[ $# -ge 2 ]] || { echo "run_all.sh: --readme needs a file" >&2; exit 2; }; readme_file=$2; shift ;;
+    --page|--readme) [[ $# -ge 2 ]] || { echo "run_all.sh: $1 needs a file" >&2; exit 2; }; page=$2; shift ;;
     -h|--help) sed -n '2,46p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
@@ -77,7 +77,7 @@ planning_caption() {
 }
 
 # Sets `tables` to each named planning table of bench/results (NAME.md) after its caption, the
-# arguments update_readme.py takes.
+# arguments paste_results.py takes.
 planning_tables() {
   tables=()
   local name
@@ -86,15 +86,15 @@ planning_tables() {
   done
 }
 
-# Pastes bench/results into the README's blocks (the commands shown are those that made them).
-paste_readme() {
-  /usr/bin/python3 bench/update_readme.py "$readme_file" speed \
+# Pastes bench/results into the pages' blocks (the commands shown are those that made them).
+paste_results() {
+  /usr/bin/python3 bench/paste_results.py "$page" speed \
     "$build/bench/bench_distance_vs_fcl" bench/results/distance_vs_fcl.txt \
     "$build/bench/bench_scenes --out bench/results (the paper's Table 1)" bench/results/table1.md \
-    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (issue 6's ratios, medians)" bench/results/ratios.md \
+    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (ratios against FCL, medians)" bench/results/ratios.md \
     "$build/bench/bench_scene_counters --repeat 20 (work per query on the planning problems)" bench/results/scene_counters.txt
   if [[ -f bench/results/profile_modes.md ]]; then
-    /usr/bin/python3 bench/update_readme.py "$readme_file" profile \
+    /usr/bin/python3 bench/paste_results.py "$page" profile \
       "bench/profile_modes.py --counters $build/bench/bench_scene_counters" bench/results/profile_modes.md \
       "bench/profile_modes.py --counters $build/bench/bench_scene_counters --scenes problem_maze,problem_thin_wall,problem_alpha_puzzle,problem_cow_doorway --repeat 50" \
       bench/results/profile_modes_more.md
@@ -111,15 +111,27 @@ paste_readme() {
     done
     planning_tables planning_solve_times planning_solve_times_maze planning_solve_times_maze_prm \
       planning_solve_times_hard
-    /usr/bin/python3 bench/update_readme.py "$readme_file" planning "${calls[@]}" "${tables[@]}"
+    /usr/bin/python3 bench/paste_results.py "$page" planning "${calls[@]}" "${tables[@]}"
   fi
   if [[ -f bench/results/planning_control.md ]]; then
     planning_tables planning_control planning_control_hard
-    /usr/bin/python3 bench/update_readme.py "$readme_file" planning_control "${tables[@]}"
+    /usr/bin/python3 bench/paste_results.py "$page" planning_control "${tables[@]}"
   fi
+  # The README's headline: a few scenes' main ratios, cut from ratios.md (first table only).
+  local headline
+  headline=$(mktemp --suffix=.md)
+  awk -F'|' -v OFS='|' '
+    /^\| scene / || /^\|---/ || /^\| (cows|camels|teddies_deforming|problem_office|problem_alpha_puzzle|problem_cow_doorway) / {
+      print "", $2, $4, $5, $7, ""
+    }
+    /^$/ && NR > 1 { exit }' bench/results/ratios.md >"$headline"
+  /usr/bin/python3 bench/paste_results.py README.md headline \
+    "/usr/bin/python3 bench/ratio_summary.py bench/results/scenes.csv (its columns 1, 3, 4 and 6 for six scenes)" \
+    "$headline"
+  rm -f "$headline"
 }
 if [[ $paste_only -eq 1 ]]; then
-  paste_readme
+  paste_results
   exit 0
 fi
 for program in bench/bench_distance_vs_fcl bench/bench_scenes bench/bench_scene_counters bench/bench_checker_calls \
@@ -228,9 +240,9 @@ if [[ $planning -eq 1 ]]; then
 elif [[ -d bench/results ]]; then
   cp bench/results/planning_*.md "$staging/" 2>/dev/null || true
 fi
-# The stress tables are the numerics suite's (tests/stress: the soak and a run of the current core),
-# pasted by its owner, and prm_thin_wall_repeat*.md two repeats of one planning command that the
-# README quotes (how far PRM's rows swing); keep them.
+# The stress tables are the numerics suite's (tests/stress: the soak and a run of the current core,
+# pasted into docs/numerics.md), and prm_thin_wall_repeat*.md two repeats of one planning command
+# that docs/benchmarks.md quotes (how far PRM's rows swing); keep them.
 for kept in bench/results/stress*.txt bench/results/prm_thin_wall_repeat*.md; do
   [[ -f "$kept" ]] && cp "$kept" "$staging/"
 done
@@ -241,5 +253,5 @@ rm -rf bench/results.old
 mv "$staging" bench/results
 rm -rf bench/results.old
 
-[[ $readme -eq 1 ]] && paste_readme
-echo "run_all.sh: bench/results written in $((SECONDS - started)) s$([[ $readme -eq 1 ]] && echo ', README.md blocks speed and planning pasted')" >&2
+[[ $paste -eq 1 ]] && paste_results
+echo "run_all.sh: bench/results written in $((SECONDS - started)) s$([[ $paste -eq 1 ]] && echo ", $page's blocks and README.md's headline pasted")" >&2

@@ -230,7 +230,7 @@ def table(rows, command, control):
             ("%.3g (censored)" % ratio) if censored else "%.3g" % ratio, low, high, ompl_ratio, ompl_low, ompl_high,
             per_check, share))
     if not control:
-        lines += ["", "Target (issue 6): ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
+        lines += ["", "Target: ours ÷ FCL ≤ 1.0 for RRTConnect and PRM."]
     return "\n".join(lines) + "\n"
 
 

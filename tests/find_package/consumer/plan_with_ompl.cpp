@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
@@ -28,8 +29,9 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 int main() {
+  const std::string problemsDir = ADSD_PROBLEMS_DIR;
   // README: the OMPL example (from here to "end of the README example").
-  const ap::ProblemFile cfg = ap::readProblemFile(ADSD_PROBLEMS_DIR "/office.cfg");  // an SE(2) problem
+  const ap::ProblemFile cfg = ap::readProblemFile(problemsDir + "/office.cfg");  // an SE(2) problem
   auto scene = std::make_shared<ap::RigidBodyScene>();
   scene->space = cfg.space;
   scene->robot = {ap::recentreRobot(adsd::io::loadMesh(cfg.robotPath), cfg.space)};
@@ -47,7 +49,7 @@ int main() {
   ap::poseToState(cfg.start.toPose(), cfg.space, start.get());
   ap::poseToState(cfg.goal.toPose(), cfg.space, goal.get());
   ss.setStartAndGoalStates(start, goal);
-  const ob::PlannerStatus solved = ss.solve(30.0);
+  const ob::PlannerStatus solved = ss.solve(30.0);  // checker->clearance(state): exact distance to the obstacles
   // end of the README example
 
   if (solved != ob::PlannerStatus::EXACT_SOLUTION || !ss.haveExactSolutionPath()) {

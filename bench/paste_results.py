@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""Pastes benchmark output into README.md between <!-- results:NAME:begin --> and
-<!-- results:NAME:end -->, so that every figure of the README is what a command printed.
+"""Pastes benchmark output into a Markdown page (docs/benchmarks.md, docs/numerics.md, README.md)
+between <!-- results:NAME:begin --> and <!-- results:NAME:end -->, so that every figure of the
+docs is what a command printed.
 
-    bench/update_readme.py README.md NAME "COMMAND" OUTPUT [ "COMMAND" OUTPUT ... ]
+    bench/paste_results.py PAGE.md NAME "COMMAND" OUTPUT [ "COMMAND" OUTPUT ... ]
 
 Each OUTPUT is shown under the command that produced it: a Markdown file (.md) as it is, anything
 else as a preformatted block. The section is replaced whole; nothing outside the markers changes.
@@ -15,7 +16,7 @@ import sys
 
 def render(pairs):
     today = datetime.date.today().isoformat()
-    parts = [f"<!-- pasted by bench/update_readme.py on {today}; do not edit by hand -->"]
+    parts = [f"<!-- pasted by bench/paste_results.py on {today}; do not edit by hand -->"]
     for command, output in pairs:
         path = pathlib.Path(output)
         text = path.read_text().rstrip()
@@ -31,15 +32,15 @@ def render(pairs):
 def main(argv):
     if len(argv) < 5 or len(argv) % 2 == 0:
         sys.exit(__doc__)
-    readme, name = pathlib.Path(argv[1]), argv[2]
+    page, name = pathlib.Path(argv[1]), argv[2]
     pairs = list(zip(argv[3::2], argv[4::2]))
     begin, end = f"<!-- results:{name}:begin -->", f"<!-- results:{name}:end -->"
-    text = readme.read_text()
+    text = page.read_text()
     if begin not in text or end not in text:
-        sys.exit(f"{readme}: no markers {begin} ... {end}")
+        sys.exit(f"{page}: no markers {begin} ... {end}")
     head, rest = text.split(begin, 1)
     _, tail = rest.split(end, 1)
-    readme.write_text(head + begin + "\n" + render(pairs) + "\n" + end + tail)
+    page.write_text(head + begin + "\n" + render(pairs) + "\n" + end + tail)
 
 
 if __name__ == "__main__":
