@@ -47,9 +47,8 @@ inline std::shared_ptr<FclObbrssModel> buildObbrss(const std::vector<Vec3>& vert
 ///
 /// Top-down, not FCL's default bottom-up: with OBBRSS (and RSS), FCL 0.7's bottom-up refit
 /// merges child volumes into parents that do not contain them; measured on a rippled cow pair in
-/// contact, fcl::distance then returned 0.43 where the rebuilt models (and the oracle) give 0, and
-/// took seconds per query (bench_scenes showed the same on the teddies: 3 of 3 oracle queries
-/// wrong). The top-down refit fits each node to its primitives again and answers correctly.
+/// contact, fcl::distance then returned 0.43 where the rebuilt models (and the oracle) give 0
+/// (bench_scenes showed the same on the teddies: 3 of 3 oracle queries wrong). The top-down refit fits each node to its primitives again and answers correctly.
 inline void refitObbrss(FclObbrssModel& model, const std::vector<Vec3>& vertices) {
   model.beginUpdateModel();
   model.updateSubModel(vertices);

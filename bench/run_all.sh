@@ -184,8 +184,8 @@ done
 if command -v perf >/dev/null && perf record -q -o "$staging/perf-probe.data" true >/dev/null 2>&1; then
   rm -f "$staging/perf-probe.data"
   # perf samples the program's own cycles, which a busy machine moves less than wall times. The
-  # first three scenes at 200 repeats, the rest at 50 (the alpha puzzle and the cow doorway take
-  # 0.1 ms per query).
+  # first three scenes at 200 repeats, the rest at 50 (the alpha puzzle's and the cow doorway's
+  # queries are the dearest, so fewer of them give as many samples).
   step profile sh -c "bench/profile_modes.py --counters '$build/bench/bench_scene_counters' > '$staging/profile_modes.md'"
   step profile_more sh -c "bench/profile_modes.py --counters '$build/bench/bench_scene_counters' \
     --scenes problem_maze,problem_thin_wall,problem_alpha_puzzle,problem_cow_doorway --repeat 50 > '$staging/profile_modes_more.md'"

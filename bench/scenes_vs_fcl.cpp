@@ -66,7 +66,7 @@ using adsd::bench::TimedMethod;
 
 /// Slack for comparing answers with the oracle, as a fraction of the scene's L: issue 2's bound
 /// for exact mode against the oracle (1e-10 × the bounding-box diagonal). Rounding in either
-/// method sits far below it (~1e-16 L measured on the cows).
+/// method sits far below it (the error columns of scenes.md).
 constexpr double kOracleSlack = 1e-10;
 /// Threshold and cap of the validity and capped-clearance queries, as a fraction of L: inside
 /// the band of gaps (0.1 %–5 % of L, median near 0.7 %), so both answers occur.

@@ -41,8 +41,8 @@ Eigen::AlignedBox3d environmentBounds(const RigidBodyScene& scene);
 double sceneScale(const RigidBodyScene& scene);
 
 /// Most parts splitIntoParts() makes (count): the broad phase bounds every robot part against
-/// every environment part on each query (a ball–box and a box–box distance, a few ns each), so a
-/// few hundred parts cost about a microsecond while letting it skip most of a large scene.
+/// every environment part on each query (a ball–box and a box–box distance, far cheaper than a
+/// distance query), so a few hundred parts cost little while letting it skip most of a large scene.
 inline constexpr std::size_t kMaxEnvironmentParts = 256;
 
 /// Pieces of at most this many triangles are not cut further (count): cutting cannot make a piece
