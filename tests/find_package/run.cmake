@@ -61,6 +61,13 @@ if(rc)
   message(FATAL_ERROR "the consumer answered wrongly: ${rc}")
 endif()
 if(WITH_PLANNER)
+  # The installed program finds its shipped problems from its own location (PREFIX/share/adsd).
+  execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=ADSD_PROBLEMS_DIR
+                          "${WORK_DIR}/prefix/bin/adsd" plan --time 10
+                  WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "the installed adsd could not plan its default problem: ${rc}")
+  endif()
   execute_process(COMMAND "${WORK_DIR}/build/plan_with_ompl" RESULT_VARIABLE rc)
   if(rc)
     message(FATAL_ERROR "the OMPL program did not plan a valid path with adsd's checker: ${rc}")
