@@ -8,6 +8,7 @@
 #include <string>
 
 #include "adsd/error.h"
+#include "adsd/triangle_distance.h"
 #include "query.h"
 
 namespace adsd {
@@ -210,6 +211,23 @@ DistanceResult Query::run() {
   // threshold: non-finite field").
   const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
   offer(a_.corner(0, 0), toA(b_.corner(0, 0)), start.norm(), 0, false, 0, false);
+  // The last answer's triangles between these meshes, measured at the new poses (WitnessHint).
+  WitnessHint& hint = buf_.hintFor(a_, b_);
+  if (hint.a == &a_ && hint.b == &b_ && hint.triangleA < nA && hint.triangleB < nB) {
+    const Vec3 q[3] = {toA(b_.corner(hint.triangleB, 0)), toA(b_.corner(hint.triangleB, 1)),
+                       toA(b_.corner(hint.triangleB, 2))};
+    const TrianglePairResult t = triangleDistanceUpTo(a_.corner(hint.triangleA, 0), a_.corner(hint.triangleA, 1),
+                                                      a_.corner(hint.triangleA, 2), q[0], q[1], q[2], enoughDistance());
+    ++counters_.trianglePairsTested;
+    offer(t.pointOnA, t.pointOnB, t.distance, hint.triangleA, false, hint.triangleB, false);
+  }
+  // Remembers where this query's answer lies, for the next query between the same meshes.
+  auto remember = [&](const DistanceResult& r) {
+    if (r.triangleA >= 0 && r.triangleB >= 0) {
+      hint = WitnessHint{&a_, &b_, static_cast<std::uint32_t>(r.triangleA), static_cast<std::uint32_t>(r.triangleB)};
+    }
+    return r;
+  };
   if (a_.hierarchy() != nullptr && b_.hierarchy() != nullptr) {
     treeA_ = a_.hierarchy();
     treeB_ = b_.hierarchy();
@@ -221,8 +239,8 @@ DistanceResult Query::run() {
     // prebuilt distance on the benchmark's 11 rigid scenes (bench_scenes): exact queries below
     // FCL's time on all 11 this way (0.14-0.78, bench/results/ratios.md); with GJK and hashing
     // on node pairs, on 3 of them when that path was last measured.
-    traverseTrees();
-    return finish();
+    if (!done_) traverseTrees();
+    return remember(finish());
   }
   buf_.orderA.resize(nA);
   buf_.orderB.resize(nB);
@@ -247,8 +265,8 @@ DistanceResult Query::run() {
   const SubMesh rootB = collectVertices(b_, buf_.orderB, 0, nB, buf_.verticesB, buf_.vertexMarkB, ++buf_.mark);
   orderA_ = buf_.orderA.data();
   orderB_ = buf_.orderB.data();
-  visit(rootA, rootB, 0, start);
-  return finish();
+  if (!done_) visit(rootA, rootB, 0, start);
+  return remember(finish());
 }
 
 DistanceResult Query::finish() const {

@@ -36,7 +36,26 @@ struct PendingNodePair {
   double nearness;  // how near the pair looks: the order among equal lower bounds (traverseTrees)
 };
 
+/// Where the last query between two meshes found its answer: the triangles of its witnesses.
+/// A planner's consecutive queries between the same meshes are near each other, so that pair's
+/// distance at the new poses is an upper bound close to the new answer before any node pair is
+/// opened (the first upper bound that sec. 6.2's rejection rule starts from). Only a hint:
+/// whatever it names is measured anew, and indices out of range are ignored.
+struct WitnessHint {
+  const Mesh* a = nullptr;
+  const Mesh* b = nullptr;
+  std::uint32_t triangleA = 0, triangleB = 0;
+};
+
 struct DistanceScratch::Buffers {
+  // Hints by mesh pair, direct-mapped on the meshes' addresses (a checker queries a robot part
+  // against a handful of environment parts in turn; a collision of two pairs costs only a hint).
+  static constexpr std::size_t kWitnessHints = 64;
+  WitnessHint witnessHints[kWitnessHints];
+  WitnessHint& hintFor(const Mesh& a, const Mesh& b) {
+    const auto key = reinterpret_cast<std::uintptr_t>(&a) * 31u + reinterpret_cast<std::uintptr_t>(&b);
+    return witnessHints[(key >> 4) % kWitnessHints];
+  }
   // The traversal's pending node pairs: a stack for validity queries, a heap for the others.
   std::vector<PendingNodePair> pendingNodePairs;
   // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
