@@ -10,6 +10,7 @@
 #include "adsd/error.h"
 #include "adsd/triangle_distance.h"
 #include "query.h"
+#include "triangle_separation.h"
 
 namespace adsd {
 
@@ -202,6 +203,22 @@ std::int64_t triangleWithVertex(const Mesh& mesh, std::int64_t vertex) {
 
 }  // namespace
 
+void Query::startFromWitnessHint() {
+  const WitnessHint& hint = buf_.hintFor(a_, b_);
+  if (hint.a != &a_ || hint.b != &b_ || hint.triangleA >= a_.triangleCount() || hint.triangleB >= b_.triangleCount()) {
+    return;
+  }
+  const Vec3 p[3] = {a_.corner(hint.triangleA, 0), a_.corner(hint.triangleA, 1), a_.corner(hint.triangleA, 2)};
+  const Vec3 q[3] = {toA(b_.corner(hint.triangleB, 0)), toA(b_.corner(hint.triangleB, 1)),
+                     toA(b_.corner(hint.triangleB, 2))};
+  // A validity query gains from the hint only when its pair is within the threshold (the state
+  // is in contact where the last one was); the separating axes rule the other case out cheaply.
+  if (options_.mode == QueryMode::threshold && trianglesFartherThan(p, q, options_.threshold + roundoff_)) return;
+  const TrianglePairResult t = triangleDistanceUpTo(p[0], p[1], p[2], q[0], q[1], q[2], enoughDistance());
+  ++counters_.trianglePairsTested;
+  offer(t.pointOnA, t.pointOnB, t.distance, hint.triangleA, false, hint.triangleB, false);
+}
+
 DistanceResult Query::run() {
   const std::uint32_t nA = static_cast<std::uint32_t>(a_.triangleCount());
   const std::uint32_t nB = static_cast<std::uint32_t>(b_.triangleCount());
@@ -211,20 +228,11 @@ DistanceResult Query::run() {
   // threshold: non-finite field").
   const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
   offer(a_.corner(0, 0), toA(b_.corner(0, 0)), start.norm(), 0, false, 0, false);
-  // The last answer's triangles between these meshes, measured at the new poses (WitnessHint).
-  WitnessHint& hint = buf_.hintFor(a_, b_);
-  if (hint.a == &a_ && hint.b == &b_ && hint.triangleA < nA && hint.triangleB < nB) {
-    const Vec3 q[3] = {toA(b_.corner(hint.triangleB, 0)), toA(b_.corner(hint.triangleB, 1)),
-                       toA(b_.corner(hint.triangleB, 2))};
-    const TrianglePairResult t = triangleDistanceUpTo(a_.corner(hint.triangleA, 0), a_.corner(hint.triangleA, 1),
-                                                      a_.corner(hint.triangleA, 2), q[0], q[1], q[2], enoughDistance());
-    ++counters_.trianglePairsTested;
-    offer(t.pointOnA, t.pointOnB, t.distance, hint.triangleA, false, hint.triangleB, false);
-  }
   // Remembers where this query's answer lies, for the next query between the same meshes.
   auto remember = [&](const DistanceResult& r) {
     if (r.triangleA >= 0 && r.triangleB >= 0) {
-      hint = WitnessHint{&a_, &b_, static_cast<std::uint32_t>(r.triangleA), static_cast<std::uint32_t>(r.triangleB)};
+      buf_.hintFor(a_, b_) = WitnessHint{&a_, &b_, static_cast<std::uint32_t>(r.triangleA),
+                                         static_cast<std::uint32_t>(r.triangleB)};
     }
     return r;
   };
@@ -239,6 +247,9 @@ DistanceResult Query::run() {
     // prebuilt distance on the benchmark's 11 rigid scenes (bench_scenes): exact queries below
     // FCL's time on all 11 this way (0.14-0.78, bench/results/ratios.md); with GJK and hashing
     // on node pairs, on 3 of them when that path was last measured.
+    // A validity query on trees measures the hint only once its roots are found near enough
+    // (traverseTrees): most such queries end at the roots, for less than one triangle pair.
+    if (options_.mode != QueryMode::threshold) startFromWitnessHint();
     if (!done_) traverseTrees();
     return remember(finish());
   }
@@ -265,6 +276,7 @@ DistanceResult Query::run() {
   const SubMesh rootB = collectVertices(b_, buf_.orderB, 0, nB, buf_.verticesB, buf_.vertexMarkB, ++buf_.mark);
   orderA_ = buf_.orderA.data();
   orderB_ = buf_.orderB.data();
+  startFromWitnessHint();
   if (!done_) visit(rootA, rootB, 0, start);
   return remember(finish());
 }

@@ -58,6 +58,8 @@ struct DistanceScratch::Buffers {
   }
   // The traversal's pending node pairs: a stack for validity queries, a heap for the others.
   std::vector<PendingNodePair> pendingNodePairs;
+  // Branch and bound over a subtree for a node's support point.
+  std::vector<std::int32_t> supportStack;
   // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
   // them in place (depth first, so a range holds the same set whenever it is revisited).
   std::vector<std::uint32_t> orderA, orderB;
@@ -98,6 +100,9 @@ class Query {
 
  private:
   DistanceResult finish() const;
+  /// Offers the distance of the triangles that answered the last query between these meshes
+  /// (WitnessHint), when the scratch has them.
+  void startFromWitnessHint();
   // --- stage three and the recursion (decomposition.cpp) ---
   void visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hint);
   /// Stage three from scratch: the support-plane split of sec. 6.1, then the child pairs.
@@ -132,6 +137,15 @@ class Query {
   // --- supports (eq. 4-5) over a sub-mesh's vertices, in mesh A's frame ---
   SupportPoint supportA(const SubMesh& a, const Vec3& d) const;
   SupportPoint supportB(const SubMesh& b, const Vec3& d) const;
+  // --- supports (eq. 4-5) of a tree node's sub-mesh, by branch and bound over its subtree ---
+  /// The vertex of node \p node of \p tree (mesh \p mesh) farthest along \p d (mesh frame);
+  /// the result names a triangle of the node's that has it as a corner.
+  static SupportPoint nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
+                                  std::vector<std::int32_t>& stack);
+  /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
+  /// margin and offers the closest support points as an upper bound. Stops once the margin proves
+  /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).
+  double hullBound(std::int32_t a, std::int32_t b, double bound);
 
   // --- the mode's rules ---
   /// May a pair (of sub-meshes or triangles) whose distance is at least `lowerSafe` be dropped?

@@ -15,6 +15,7 @@
 // mode's rule); the paper's stages answer queries from scratch (decomposition.cpp).
 
 #include <algorithm>
+#include <limits>
 
 #include "adsd/triangle_distance.h"
 #include "box_separation.h"
@@ -29,6 +30,24 @@ namespace {
 /// How large a box is, for choosing which node of a pair to split: the larger one, as halving
 /// a small robot part against a room-sized node only multiplies the pairs.
 inline double boxSize2(const OrientedBox& box) { return box.half.squaredNorm(); }
+
+/// GJK iterations a node pair's hull bound may take (hullBound): its lower bound holds at any
+/// iteration, and the first few do most of the tightening.
+constexpr int kHullBoundIterations = 6;
+/// Node pairs with fewer triangles than this on either side are left to boxes and triangles:
+/// there GJK's support descents cost more than the few pairs they could save.
+constexpr std::uint32_t kHullBoundMinTriangles = 8;
+
+/// Whether a tolerance query should bound node pair (na, nb), whose boxes are `lower` apart, by
+/// GJK on the nodes' hulls (sec. 4). Only pairs apart by more than their circumscribed radii:
+/// there the hulls' margin lies close to the sub-meshes' distance (the near sides of sub-meshes
+/// seen from afar are on their hulls), so one GJK run can settle a pair within the tolerance
+/// where the boxes, fat around curved sub-meshes, would need it split down to the leaves. Closer
+/// pairs' hulls overlap or nearly, and GJK there is cost without a bound.
+inline bool worthHullBound(const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb, double lower) {
+  return lower > na.box.radius + nb.box.radius && na.t1 - na.t0 >= kHullBoundMinTriangles &&
+         nb.t1 - nb.t0 >= kHullBoundMinTriangles;
+}
 
 /// A leaf's mask with all its triangles live (bit k for triangle t0 + k).
 constexpr std::uint32_t kAllLeafTriangles = ~0u;
@@ -186,6 +205,16 @@ void Query::traverseTrees() {
     return next;
   };
 
+  // A tolerance query's pair far apart for its size: the hulls' margin raises its lower bound,
+  // and GJK's closest support points may lower the upper bound (hullBound). True when the pair
+  // is then proven farther than the bound, so that it is dropped unopened.
+  auto raiseByHullBound = [&](Pending& pair) {
+    pair.lower = std::max(pair.lower, hullBound(pair.a, pair.b, bound));
+    limit = pruneBound();
+    bound = limit + roundoff_;
+    return pair.lower > bound;
+  };
+
   Pending p;
   bool have = false;
   if (lowersUpperBound) {
@@ -208,7 +237,8 @@ void Query::traverseTrees() {
       dropped();
     } else {
       p = Pending{0, 0, 0, kAllLeafTriangles, kAllLeafTriangles, 0.0, sphereGap};
-      have = true;
+      startFromWitnessHint();
+      have = !done_;
     }
   }
   while (have && !done_) {
@@ -219,6 +249,10 @@ void Query::traverseTrees() {
         counters_.pairsRejectedByBounds += pending.size();
         return;
       }
+    } else if (options_.mode == QueryMode::tolerance && worthHullBound(nodesA[p.a], nodesB[p.b], p.lower) &&
+               raiseByHullBound(p)) {
+      ++counters_.pairsRejectedByBounds;
+      dropped();
     } else if (!refineLeaves(p, nodesA[p.a], nodesB[p.b])) {
       ++counters_.pairsRejectedByBounds;
       dropped();
@@ -256,6 +290,66 @@ void Query::traverseTrees() {
     have = !pending.empty();
     if (have) p = takeNext();
   }
+}
+
+SupportPoint Query::nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
+                                std::vector<std::int32_t>& stack) {
+  const std::vector<MeshHierarchy::Node>& nodes = tree.nodes();
+  double bestValue = -std::numeric_limits<double>::infinity();
+  std::uint32_t bestVertex = 0;
+  std::int32_t bestLeaf = node;
+  stack.clear();
+  stack.push_back(node);
+  while (!stack.empty()) {
+    const std::int32_t i = stack.back();
+    stack.pop_back();
+    const MeshHierarchy::Node& n = nodes[i];
+    if (n.box.support(d) <= bestValue) continue;  // nothing in this box beats the best vertex
+    if (n.isLeaf()) {
+      for (std::uint32_t k = n.v0; k < n.v1; ++k) {
+        const std::uint32_t v = tree.leafVertices()[k];
+        const double value = d.dot(mesh.vertices()[v]);
+        if (value > bestValue) {
+          bestValue = value;
+          bestVertex = v;
+          bestLeaf = i;
+        }
+      }
+      continue;
+    }
+    // The child whose box reaches farther along d last, so it is taken first.
+    const bool leftFirst = nodes[n.left].box.support(d) >= nodes[n.right].box.support(d);
+    stack.push_back(leftFirst ? n.right : n.left);
+    stack.push_back(leftFirst ? n.left : n.right);
+  }
+  SupportPoint s;
+  s.point = mesh.vertices()[bestVertex];
+  s.isVertex = false;
+  const MeshHierarchy::Node& leaf = nodes[bestLeaf];
+  s.feature = tree.order()[leaf.t0];
+  for (std::uint32_t k = leaf.t0; k < leaf.t1; ++k) {
+    const TriangleIndices& t = mesh.triangles()[tree.order()[k]];
+    if (t[0] == bestVertex || t[1] == bestVertex || t[2] == bestVertex) s.feature = tree.order()[k];
+  }
+  return s;
+}
+
+double Query::hullBound(std::int32_t a, std::int32_t b, double bound) {
+  auto supportOfA = [&](const Vec3& d) { return nodeSupport(a_, *treeA_, a, d, buf_.supportStack); };
+  auto supportOfB = [&](const Vec3& dInA) {
+    SupportPoint s = nodeSupport(b_, *treeB_, b, rotationAB_ * dInA, buf_.supportStack);
+    s.point = toA(s.point);
+    return s;
+  };
+  int iterations = 0;
+  auto enough = [&](double lowerSafe) { return lowerSafe > bound || ++iterations >= kHullBoundIterations; };
+  const Vec3 start = treeA_->nodes()[a].box.center - toA(treeB_->nodes()[b].box.center);
+  const GjkResult g = runGjk(supportOfA, supportOfB, start, enough, magnitude_);
+  ++counters_.gjkCalls;
+  counters_.gjkIterations += static_cast<std::uint64_t>(g.iterations);
+  counters_.gjkMaxIterations = std::max(counters_.gjkMaxIterations, g.iterations);
+  if (g.closest.distance < best_) offer(g.closest);
+  return g.lower - roundoff_;
 }
 
 void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, const MeshHierarchy::Node& nb,
