@@ -58,29 +58,22 @@ inline OrientedBox placedBox(const OrientedBox& other, const Eigen::Matrix3d& ro
 inline BoxPairBound boxLowerBound(const OrientedBox& a, const OrientedBox& b, double bound) {
   // The boxes' circumscribed spheres first: a dozen operations decide the pairs far apart.
   const Vec3 offset = b.center - a.center;
-  const double sphereGap = offset.norm() - a.radius - b.radius;
+  const double centres = offset.norm();
+  const double sphereGap = centres - a.radius - b.radius;
   if (sphereGap > bound) return {sphereGap, sphereGap};
-  // B's centre (t) and axes (columns of c) in A's box frame. Written out in scalars: this is the
-  // traversal's innermost test.
-  double t[3], c[3][3], absC[3][3];
+  // The offset between the centres in each box's own frame (t in A's, tB in B's). Written out
+  // in scalars: this is the traversal's innermost test.
+  double t[3], tB[3];
   for (int i = 0; i < 3; ++i) {
     t[i] = a.axes.col(i).dot(offset);
-    for (int j = 0; j < 3; ++j) {
-      c[i][j] = a.axes.col(i).dot(b.axes.col(j));
-      absC[i][j] = std::abs(c[i][j]);
-    }
+    tB[i] = b.axes.col(i).dot(offset);
   }
   const double ha[3] = {a.half[0], a.half[1], a.half[2]};
   const double hb[3] = {b.half[0], b.half[1], b.half[2]};
-  const double bound2 = bound * bound;
-  // B's centre in B's own box frame, relative to A's centre (tB[j] = offset . c_j).
-  double tB[3];
-  for (int j = 0; j < 3; ++j) tB[j] = c[0][j] * t[0] + c[1][j] * t[1] + c[2][j] * t[2];
   // The axis through the two centres. Any unit direction u bounds the distance of two convex sets
   // from below by the gap of their projections (sec. 4, eq. 4: the support planes' margin), and
   // the centre line is near the best direction whenever the boxes are apart by more than their
   // size. A box's projection on u reaches sum_i half_i |axis_i . u|.
-  const double centres = offset.norm();
   double centreGap = -std::numeric_limits<double>::infinity();
   if (centres > 0.0) {
     const double reach = ha[0] * std::abs(t[0]) + ha[1] * std::abs(t[1]) + ha[2] * std::abs(t[2]) +
@@ -88,6 +81,12 @@ inline BoxPairBound boxLowerBound(const OrientedBox& a, const OrientedBox& b, do
     centreGap = centres - reach / centres;
     if (centreGap > bound) return {centreGap, sphereGap};
   }
+  // B's axes in A's box frame, for the face axes' reach.
+  double absC[3][3];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) absC[i][j] = std::abs(a.axes.col(i).dot(b.axes.col(j)));
+  }
+  const double bound2 = bound * bound;
   // A's face axes, then B's. One gap above the bound decides at once; else the positive gaps of
   // one box's three axes together bound the distance (their vector's length).
   double gapsA2 = 0.0;

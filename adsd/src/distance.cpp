@@ -66,7 +66,6 @@ Query::Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
   rotationBA_ = rA.transpose() * poseB.linear();
   translationBA_ = rA.transpose() * (poseB.translation() - poseA.translation());
   rotationAB_ = rotationBA_.transpose();
-  absRotationBA_ = rotationBA_.cwiseAbs();
   magnitude_ = std::sqrt(3.0) * (a.maxAbsCoordinate() + b.maxAbsCoordinate()) + translationBA_.norm();
   roundoff_ = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude_;
 }

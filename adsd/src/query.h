@@ -30,8 +30,10 @@ struct SlabTriangle {
 /// box is far from everything the box holds.
 struct PendingNodePair {
   std::int32_t a, b;
-  int depth;
-  std::uint32_t maskA, maskB;
+  // Kept small: a best-first traversal moves these through its heap, and the move is a good
+  // part of the cost of a node pair.
+  std::uint16_t depth;
+  std::uint8_t maskA, maskB;
   double lower;
   double nearness;  // how near the pair looks: the order among equal lower bounds (traverseTrees)
 };
@@ -177,7 +179,6 @@ class Query {
   Eigen::Matrix3d rotationBA_;   // B frame -> A frame
   Vec3 translationBA_;
   Eigen::Matrix3d rotationAB_;   // directions from A frame into B frame (transpose)
-  Eigen::Matrix3d absRotationBA_;  // |rotationBA_|, for box projections
   double magnitude_ = 0.0;       // largest |coordinate| of either mesh in A's frame
   double roundoff_ = 0.0;        // kBoundSafetyUlps * eps * magnitude_
 

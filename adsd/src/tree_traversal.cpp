@@ -50,8 +50,8 @@ inline bool worthHullBound(const MeshHierarchy::Node& na, const MeshHierarchy::N
 }
 
 /// A leaf's mask with all its triangles live (bit k for triangle t0 + k).
-constexpr std::uint32_t kAllLeafTriangles = ~0u;
-static_assert(MeshHierarchy::kLeafTriangles < 32, "a leaf's live triangles are the bits of a 32-bit mask");
+constexpr std::uint8_t kAllLeafTriangles = 0xFF;
+static_assert(MeshHierarchy::kLeafTriangles <= 8, "a leaf's live triangles are the bits of an 8-bit mask");
 
 /// The bits a leaf's triangles occupy in a mask.
 inline std::uint32_t leafBits(const MeshHierarchy::Node& leaf) { return (1u << (leaf.t1 - leaf.t0)) - 1u; }
@@ -121,7 +121,7 @@ void Query::traverseTrees() {
   // placedB (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split
   // left whole, so that both children of a split are tested against one placed box. Returns
   // false when the pair was dropped, else fills `out`.
-  auto test = [&](std::int32_t a, std::int32_t b, int depth, std::uint32_t maskA, std::uint32_t maskB,
+  auto test = [&](std::int32_t a, std::int32_t b, int depth, std::uint8_t maskA, std::uint8_t maskB,
                   const OrientedBox* placedA, const OrientedBox* placedB, Pending& out) {
     ++counters_.subMeshPairs;
     counters_.maxDepth = std::max(counters_.maxDepth, depth);
@@ -133,22 +133,22 @@ void Query::traverseTrees() {
       return false;
     }
     if (!lowersUpperBound) {
-      out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
+      out = Pending{a, b, static_cast<std::uint16_t>(depth), maskA, maskB, boxes.lower, boxes.nearness};
       return true;
     }
     // The two nodes' representative points: a real distance, so a candidate upper bound, and
     // with the boxes' nearness the pair's estimate for the order.
     const MeshHierarchy::Node& na = nodesA[a];
     const MeshHierarchy::Node& nb = nodesB[b];
-    const Vec3 onA = a_.corner(na.repTriangle, static_cast<int>(na.repCorner));
-    const Vec3 onB = toA(b_.corner(nb.repTriangle, static_cast<int>(nb.repCorner)));
+    const Vec3& onA = na.repPoint;
+    const Vec3 onB = toA(nb.repPoint);
     const double between = (onA - onB).norm();
     if (between < best_) {
       offer(onA, onB, between, na.repTriangle, false, nb.repTriangle, false);
       limit = pruneBound();
       bound = limit + roundoff_;
     }
-    out = Pending{a, b, depth, maskA, maskB, boxes.lower, 0.5 * (between + boxes.nearness)};
+    out = Pending{a, b, static_cast<std::uint16_t>(depth), maskA, maskB, boxes.lower, 0.5 * (between + boxes.nearness)};
     return true;
   };
   // When a pair is taken (not when it is first tested: a best-first query drops many pairs
@@ -168,11 +168,11 @@ void Query::traverseTrees() {
     const bool refineA = na.isLeaf() && (!nb.isLeaf() || boxSize2(na.box) > boxSize2(nb.box) || bothLeaves);
     const bool refineB = nb.isLeaf() && (!refineA || bothLeaves);
     if (refineA) {
-      pair.maskA = trianglesNearBox(a_, orderA_, na, pair.maskA, placedBox(nb.box, rotationBA_, translationBA_), bound);
+      pair.maskA = static_cast<std::uint8_t>(trianglesNearBox(a_, orderA_, na, pair.maskA, placedBox(nb.box, rotationBA_, translationBA_), bound));
       if (pair.maskA == 0) return false;
     }
     if (refineB) {
-      pair.maskB = trianglesNearBox(b_, orderB_, nb, pair.maskB, placedBox(na.box, rotationAB_, translationAB), bound);
+      pair.maskB = static_cast<std::uint8_t>(trianglesNearBox(b_, orderB_, nb, pair.maskB, placedBox(na.box, rotationAB_, translationAB), bound));
       if (pair.maskB == 0) return false;
     }
     return true;
