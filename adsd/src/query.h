@@ -140,10 +140,11 @@ class Query {
   SupportPoint supportA(const SubMesh& a, const Vec3& d) const;
   SupportPoint supportB(const SubMesh& b, const Vec3& d) const;
   // --- supports (eq. 4-5) of a tree node's sub-mesh, by branch and bound over its subtree ---
-  /// The vertex of node \p node of \p tree (mesh \p mesh) farthest along \p d (mesh frame);
-  /// the result names a triangle of the node's that has it as a corner.
+  /// The vertex of node \p node of \p tree (mesh \p mesh) farthest along \p d (mesh frame),
+  /// searched from \p warm (a point of the node's, mesh frame); the result names a triangle of
+  /// the node's that has it as a corner.
   static SupportPoint nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
-                                  std::vector<std::int32_t>& stack);
+                                  SupportPoint warm, std::vector<std::int32_t>& stack);
   /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
   /// margin and offers the closest support points as an upper bound. Stops once the margin proves
   /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).

@@ -33,17 +33,18 @@ inline double boxSize2(const OrientedBox& box) { return box.half.squaredNorm(); 
 
 /// GJK iterations a node pair's hull bound may take (hullBound): its lower bound holds at any
 /// iteration, and the first few do most of the tightening.
-constexpr int kHullBoundIterations = 6;
+constexpr int kHullBoundIterations = 3;
 /// Node pairs with fewer triangles than this on either side are left to boxes and triangles:
 /// there GJK's support descents cost more than the few pairs they could save.
 constexpr std::uint32_t kHullBoundMinTriangles = 8;
 
-/// Whether a tolerance query should bound node pair (na, nb), whose boxes are `lower` apart, by
-/// GJK on the nodes' hulls (sec. 4). Only pairs apart by more than their circumscribed radii:
-/// there the hulls' margin lies close to the sub-meshes' distance (the near sides of sub-meshes
-/// seen from afar are on their hulls), so one GJK run can settle a pair within the tolerance
-/// where the boxes, fat around curved sub-meshes, would need it split down to the leaves. Closer
-/// pairs' hulls overlap or nearly, and GJK there is cost without a bound.
+/// Whether a query that lowers an upper bound should bound node pair (na, nb), whose boxes are
+/// `lower` apart, by GJK on the nodes' hulls (sec. 4). Only pairs apart by more than their
+/// circumscribed radii: there the hulls' margin lies close to the sub-meshes' distance (the near
+/// sides of sub-meshes seen from afar are on their hulls), so one GJK run can drop a pair that
+/// the boxes, fat around curved sub-meshes, would have split down to the leaves, and a tolerance
+/// query can settle it within its tolerance. Closer pairs' hulls overlap or nearly, and GJK
+/// there is cost without a bound.
 inline bool worthHullBound(const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb, double lower) {
   return lower > na.box.radius + nb.box.radius && na.t1 - na.t0 >= kHullBoundMinTriangles &&
          nb.t1 - nb.t0 >= kHullBoundMinTriangles;
@@ -205,7 +206,7 @@ void Query::traverseTrees() {
     return next;
   };
 
-  // A tolerance query's pair far apart for its size: the hulls' margin raises its lower bound,
+  // A pair far apart for its size: the hulls' margin raises its lower bound,
   // and GJK's closest support points may lower the upper bound (hullBound). True when the pair
   // is then proven farther than the bound, so that it is dropped unopened.
   auto raiseByHullBound = [&](Pending& pair) {
@@ -249,7 +250,7 @@ void Query::traverseTrees() {
         counters_.pairsRejectedByBounds += pending.size();
         return;
       }
-    } else if (options_.mode == QueryMode::tolerance && worthHullBound(nodesA[p.a], nodesB[p.b], p.lower) &&
+    } else if (lowersUpperBound && worthHullBound(nodesA[p.a], nodesB[p.b], p.lower) &&
                raiseByHullBound(p)) {
       ++counters_.pairsRejectedByBounds;
       dropped();
@@ -293,11 +294,13 @@ void Query::traverseTrees() {
 }
 
 SupportPoint Query::nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
-                                std::vector<std::int32_t>& stack) {
+                                SupportPoint warm, std::vector<std::int32_t>& stack) {
   const std::vector<MeshHierarchy::Node>& nodes = tree.nodes();
-  double bestValue = -std::numeric_limits<double>::infinity();
-  std::uint32_t bestVertex = 0;
-  std::int32_t bestLeaf = node;
+  // Start from `warm`, a point of the node's (the last support point GJK found, or the node's
+  // representative point): every box that cannot beat it is skipped unopened, and GJK's
+  // directions change little from one iteration to the next.
+  double bestValue = d.dot(warm.point);
+  SupportPoint best = warm;
   stack.clear();
   stack.push_back(node);
   while (!stack.empty()) {
@@ -306,13 +309,20 @@ SupportPoint Query::nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std
     const MeshHierarchy::Node& n = nodes[i];
     if (n.box.support(d) <= bestValue) continue;  // nothing in this box beats the best vertex
     if (n.isLeaf()) {
+      std::uint32_t bestVertex = UINT32_MAX;
       for (std::uint32_t k = n.v0; k < n.v1; ++k) {
         const std::uint32_t v = tree.leafVertices()[k];
         const double value = d.dot(mesh.vertices()[v]);
         if (value > bestValue) {
           bestValue = value;
           bestVertex = v;
-          bestLeaf = i;
+        }
+      }
+      if (bestVertex != UINT32_MAX) {
+        best.point = mesh.vertices()[bestVertex];
+        for (std::uint32_t k = n.t0; k < n.t1; ++k) {
+          const TriangleIndices& t = mesh.triangles()[tree.order()[k]];
+          if (t[0] == bestVertex || t[1] == bestVertex || t[2] == bestVertex) best.feature = tree.order()[k];
         }
       }
       continue;
@@ -322,22 +332,21 @@ SupportPoint Query::nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std
     stack.push_back(leftFirst ? n.right : n.left);
     stack.push_back(leftFirst ? n.left : n.right);
   }
-  SupportPoint s;
-  s.point = mesh.vertices()[bestVertex];
-  s.isVertex = false;
-  const MeshHierarchy::Node& leaf = nodes[bestLeaf];
-  s.feature = tree.order()[leaf.t0];
-  for (std::uint32_t k = leaf.t0; k < leaf.t1; ++k) {
-    const TriangleIndices& t = mesh.triangles()[tree.order()[k]];
-    if (t[0] == bestVertex || t[1] == bestVertex || t[2] == bestVertex) s.feature = tree.order()[k];
-  }
-  return s;
+  return best;
 }
 
 double Query::hullBound(std::int32_t a, std::int32_t b, double bound) {
-  auto supportOfA = [&](const Vec3& d) { return nodeSupport(a_, *treeA_, a, d, buf_.supportStack); };
+  // Each side's last support point (in its own mesh frame) warms the next search.
+  const MeshHierarchy::Node& na = treeA_->nodes()[a];
+  const MeshHierarchy::Node& nb = treeB_->nodes()[b];
+  SupportPoint lastA{na.repPoint, na.repTriangle, false}, lastB{nb.repPoint, nb.repTriangle, false};
+  auto supportOfA = [&](const Vec3& d) {
+    lastA = nodeSupport(a_, *treeA_, a, d, lastA, buf_.supportStack);
+    return lastA;
+  };
   auto supportOfB = [&](const Vec3& dInA) {
-    SupportPoint s = nodeSupport(b_, *treeB_, b, rotationAB_ * dInA, buf_.supportStack);
+    lastB = nodeSupport(b_, *treeB_, b, rotationAB_ * dInA, lastB, buf_.supportStack);
+    SupportPoint s = lastB;
     s.point = toA(s.point);
     return s;
   };
