@@ -24,9 +24,9 @@ namespace adsd::detail {
 
 /// \brief What boxLowerBound found: a lower bound of the boxes' distance, and how near they are by
 /// their circumscribed spheres (centre distance minus radii, negative when the spheres overlap):
-/// the key that orders a traversal's children. Measured on the scenes benchmark's camels at 1 %
-/// of the diagonal, ordering by it found pairs within the threshold with ~1/3 less work than
-/// ordering by the lower bound, which is 0 for every overlapping pair and so cannot rank them.
+/// the key that orders a traversal's children. The lower bound cannot rank overlapping pairs (it
+/// is 0 for every one of them); the spheres' gap can, and ordering by it finds pairs within a
+/// validity query's threshold sooner.
 struct BoxPairBound {
   double lower;
   double nearness;

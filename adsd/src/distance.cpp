@@ -242,10 +242,8 @@ DistanceResult Query::run() {
     orderB_ = treeB_->order().data();
     // Rigid meshes with trees: the boxes built once already hold what GJK and the hash grid
     // would work out per query, so every mode runs the box-and-triangle traversal of
-    // tree_traversal.cpp (sec. 6.2's rejection rule on node pairs). Measured against FCL's
-    // prebuilt distance on the benchmark's 11 rigid scenes (bench_scenes): exact queries below
-    // FCL's time on all 11 this way (0.14-0.78, bench/results/ratios.md); with GJK and hashing
-    // on node pairs, on 3 of them when that path was last measured.
+    // tree_traversal.cpp (sec. 6.2's rejection rule on node pairs), with GJK kept for node pairs
+    // far apart for their size (the hull bound).
     // A validity query on trees measures the hint only once its roots are found near enough
     // (traverseTrees): most such queries end at the roots, for less than one triangle pair.
     if (options_.mode != QueryMode::threshold) startFromWitnessHint();

@@ -3,10 +3,14 @@
 // pair dropped by the cheapest sound test that proves it cannot matter.
 //
 // The paper's stages exist to find and cull without preprocessing (sec. 4-6). With trees built
-// once, the boxes already hold what GJK and the hash grid would work out per query, so neither
-// runs here: a node pair is dropped when its boxes are proven farther apart than the current
-// bound (sec. 6.2's rejection rule: for exact queries the global upper bound, for validity
-// queries the threshold D), or else the larger node is split. Leaves' triangles are tested
+// once, the boxes already hold most of what GJK and the hash grid would work out per query: a
+// node pair is dropped when its boxes are proven farther apart than the current bound (sec.
+// 6.2's rejection rule: for exact queries the global upper bound, for validity queries the
+// threshold D), along the line through their centres or their face normals (box_separation.h),
+// or else the larger node is split. Where boxes are weakest, on curved sub-meshes apart by more
+// than their size, the paper's own bound takes over: GJK on the two nodes' hulls (sec. 4), with
+// supports found by branch and bound over the subtrees, gives the support planes' margin as a
+// lower bound and the closest support points as an upper bound. Leaves' triangles are tested
 // against the other node's box and against each other's (filters that only ever prove
 // "farther"), and only the pairs no filter separates reach the exact triangle distance. A
 // validity query stops at the first triangle pair within D.
@@ -110,14 +114,11 @@ void Query::traverseTrees() {
   const bool lowersUpperBound = options_.mode != QueryMode::threshold;
   // Queries that lower an upper bound take one from each pair of nodes they test: the distance
   // between the nodes' representative points (MeshHierarchy::Node). Without it, best first by
-  // lower bound found the closest triangles late (office, exact: at the 63rd of 84 pairs taken,
-  // with 30 of 36 triangle tests spent before), while the proof of the minimum alone, told the
-  // answer, cost 1/3 of the time (bench_scene_counters, mode known: 13.6 against 43 us). Ordering
-  // equal lower bounds by the mean of that distance and the boxes' nearness, instead of nearness
-  // alone, took office exact from 0.99 to 0.60 of FCL's time and the bug trap from 0.96 to 0.86
-  // in one run. A validity query keeps nearness alone and offers no such points: it ends at a
-  // pair within D, which two representative points seldom are (at D = 1 % of the robot, offering
-  // them made bench_scene_counters' threshold queries 5-10 % slower).
+  // lower bound finds the closest triangles late, after most of the triangle tests, while the
+  // proof of the minimum alone, told the answer, is a fraction of the work (bench_scene_counters,
+  // mode known, counts both). Equal lower bounds are ordered by the mean of that distance and the
+  // boxes' nearness. A validity query keeps nearness alone and offers no such points: it ends at
+  // a pair within D, which two representative points seldom are.
   // Tests the pair (a, b) by its boxes. One of the two comes placed in the other mesh's frame:
   // placedB (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split
   // left whole, so that both children of a split are tested against one placed box. Returns
@@ -158,13 +159,11 @@ void Query::traverseTrees() {
   // leaf's own box is tight already, the larger one's may be fat: a floor and a wall triangle of
   // an environment fill a room corner). Each mesh's triangles are tested in their own frame,
   // against the other box placed there. Returns false when no triangle of a leaf is left.
-  // Moving this from the test to the taking measured ~10 % less time on the bug trap's exact
-  // queries (bench_scene_counters).
   auto refineLeaves = [&](Pending& pair, const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb) {
     // Two leaves meeting: queries that lower an upper bound refine both leaves' triangles against
-    // the other's box, since every triangle pair left costs an 11-axis filter and often an exact
-    // test (bench_scene_counters, bug trap exact: ~8 % less time); a validity query, which mostly
-    // ends at the first pair or proves the boxes apart, refines the larger leaf only.
+    // the other's box, since every triangle pair left costs a separating-axis filter and often an
+    // exact test; a validity query, which mostly ends at the first pair or proves the boxes apart,
+    // refines the larger leaf only.
     const bool bothLeaves = na.isLeaf() && nb.isLeaf() && lowersUpperBound;
     const bool refineA = na.isLeaf() && (!nb.isLeaf() || boxSize2(na.box) > boxSize2(nb.box) || bothLeaves);
     const bool refineB = nb.isLeaf() && (!refineA || bothLeaves);
@@ -183,10 +182,9 @@ void Query::traverseTrees() {
   // nearness alone (BoxPairBound): it mostly ends at the first triangle pair within D, or else
   // must visit every pair its boxes cannot drop, in any order. Queries that lower an upper bound
   // go best first: always the pending pair of smallest lower bound, ties (common among
-  // overlapping boxes, whose bound is 0) by the estimate `test` gives. Depth first had found the
-  // final upper bound late: on bench_scene_counters' bug trap, exact queries then took 266 node
-  // pairs and 102 triangle tests, against 120 and 6 when started from the final distance; best
-  // first took 181 and 29, and on the alpha puzzle 907 node pairs instead of 2 276.
+  // overlapping boxes, whose bound is 0) by the estimate `test` gives. Depth first finds the
+  // final upper bound late and so opens far more node pairs and triangle pairs before it
+  // (bench_scene_counters counts both).
   auto takenBefore = [lowersUpperBound](const Pending& x, const Pending& y) {
     if (!lowersUpperBound) return x.nearness < y.nearness;
     return x.lower < y.lower || (x.lower == y.lower && x.nearness < y.nearness);
@@ -224,12 +222,8 @@ void Query::traverseTrees() {
   } else {
     // A validity query compares the roots' circumscribed spheres only and leaves the separating
     // axes to the children. Its callers ask about pairs a broad phase could not drop, whose whole
-    // boxes nearly always overlap: 99.5 % of the office's pair queries on the states PRM checks
-    // (bench_checker_calls --from prm; counted in session 7 with a temporary counter). There the
-    // roots' full test (all 15 axes, as none separates) decided nothing; leaving it out, and
-    // placing only B's root centre, took a pair query from 3 950 to 3 070 instructions (callgrind
-    // over 20 000 recorded PRM states, about 81 800 pair queries: PRM's threads make two
-    // recordings differ slightly; README, planning).
+    // boxes nearly always overlap (bench_checker_calls --from prm replays such states), so the
+    // roots' full test mostly decides nothing; only B's root centre is placed for the spheres.
     ++counters_.subMeshPairs;
     const double sphereGap = (toA(nodesB[0].box.center) - nodesA[0].box.center).norm() - nodesA[0].box.radius -
                              nodesB[0].box.radius;
