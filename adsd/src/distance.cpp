@@ -8,7 +8,9 @@
 #include <string>
 
 #include "adsd/error.h"
+#include "adsd/triangle_distance.h"
 #include "query.h"
+#include "triangle_separation.h"
 
 namespace adsd {
 
@@ -64,7 +66,6 @@ Query::Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
   rotationBA_ = rA.transpose() * poseB.linear();
   translationBA_ = rA.transpose() * (poseB.translation() - poseA.translation());
   rotationAB_ = rotationBA_.transpose();
-  absRotationBA_ = rotationBA_.cwiseAbs();
   magnitude_ = std::sqrt(3.0) * (a.maxAbsCoordinate() + b.maxAbsCoordinate()) + translationBA_.norm();
   roundoff_ = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude_;
 }
@@ -201,6 +202,22 @@ std::int64_t triangleWithVertex(const Mesh& mesh, std::int64_t vertex) {
 
 }  // namespace
 
+void Query::startFromWitnessHint() {
+  const WitnessHint& hint = buf_.hintFor(a_, b_);
+  if (hint.a != &a_ || hint.b != &b_ || hint.triangleA >= a_.triangleCount() || hint.triangleB >= b_.triangleCount()) {
+    return;
+  }
+  const Vec3 p[3] = {a_.corner(hint.triangleA, 0), a_.corner(hint.triangleA, 1), a_.corner(hint.triangleA, 2)};
+  const Vec3 q[3] = {toA(b_.corner(hint.triangleB, 0)), toA(b_.corner(hint.triangleB, 1)),
+                     toA(b_.corner(hint.triangleB, 2))};
+  // A validity query gains from the hint only when its pair is within the threshold (the state
+  // is in contact where the last one was); the separating axes rule the other case out cheaply.
+  if (options_.mode == QueryMode::threshold && trianglesFartherThan(p, q, options_.threshold + roundoff_)) return;
+  const TrianglePairResult t = triangleDistanceUpTo(p[0], p[1], p[2], q[0], q[1], q[2], enoughDistance());
+  ++counters_.trianglePairsTested;
+  offer(t.pointOnA, t.pointOnB, t.distance, hint.triangleA, false, hint.triangleB, false);
+}
+
 DistanceResult Query::run() {
   const std::uint32_t nA = static_cast<std::uint32_t>(a_.triangleCount());
   const std::uint32_t nB = static_cast<std::uint32_t>(b_.triangleCount());
@@ -210,6 +227,14 @@ DistanceResult Query::run() {
   // threshold: non-finite field").
   const Vec3 start = a_.corner(0, 0) - toA(b_.corner(0, 0));
   offer(a_.corner(0, 0), toA(b_.corner(0, 0)), start.norm(), 0, false, 0, false);
+  // Remembers where this query's answer lies, for the next query between the same meshes.
+  auto remember = [&](const DistanceResult& r) {
+    if (r.triangleA >= 0 && r.triangleB >= 0) {
+      buf_.hintFor(a_, b_) = WitnessHint{&a_, &b_, static_cast<std::uint32_t>(r.triangleA),
+                                         static_cast<std::uint32_t>(r.triangleB)};
+    }
+    return r;
+  };
   if (a_.hierarchy() != nullptr && b_.hierarchy() != nullptr) {
     treeA_ = a_.hierarchy();
     treeB_ = b_.hierarchy();
@@ -217,12 +242,13 @@ DistanceResult Query::run() {
     orderB_ = treeB_->order().data();
     // Rigid meshes with trees: the boxes built once already hold what GJK and the hash grid
     // would work out per query, so every mode runs the box-and-triangle traversal of
-    // tree_traversal.cpp (sec. 6.2's rejection rule on node pairs). Measured against FCL's
-    // prebuilt distance on the benchmark's 11 rigid scenes (bench_scenes): exact queries below
-    // FCL's time on all 11 this way (0.14-0.78, bench/results/ratios.md); with GJK and hashing
-    // on node pairs, on 3 of them when that path was last measured.
-    traverseTrees();
-    return finish();
+    // tree_traversal.cpp (sec. 6.2's rejection rule on node pairs), with GJK kept for node pairs
+    // far apart for their size (the hull bound).
+    // A validity query on trees measures the hint only once its roots are found near enough
+    // (traverseTrees): most such queries end at the roots, for less than one triangle pair.
+    if (options_.mode != QueryMode::threshold) startFromWitnessHint();
+    if (!done_) traverseTrees();
+    return remember(finish());
   }
   buf_.orderA.resize(nA);
   buf_.orderB.resize(nB);
@@ -247,8 +273,9 @@ DistanceResult Query::run() {
   const SubMesh rootB = collectVertices(b_, buf_.orderB, 0, nB, buf_.verticesB, buf_.vertexMarkB, ++buf_.mark);
   orderA_ = buf_.orderA.data();
   orderB_ = buf_.orderB.data();
-  visit(rootA, rootB, 0, start);
-  return finish();
+  startFromWitnessHint();
+  if (!done_) visit(rootA, rootB, 0, start);
+  return remember(finish());
 }
 
 DistanceResult Query::finish() const {

@@ -117,6 +117,7 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
       }
     }
   }
+  node.repPoint = mesh.corner(node.repTriangle, static_cast<int>(node.repCorner));
   if (t1 - t0 <= kLeafTriangles) {
     node.v0 = static_cast<std::uint32_t>(leafVertices_.size());
     for (std::uint32_t i = t0; i < t1; ++i) {
@@ -151,6 +152,7 @@ void MeshHierarchy::refit(const Mesh& mesh) {
     // The axes stay; the extents are fitted anew (to the leaf's vertices, or to the corners of
     // the children's refitted boxes, which contain everything below).
     Node& n = nodes_[i];
+    n.repPoint = mesh.corner(n.repTriangle, static_cast<int>(n.repCorner));
     if (n.isLeaf()) {
       std::vector<Vec3> points;
       for (std::uint32_t k = n.v0; k < n.v1; ++k) points.push_back(mesh.vertices()[leafVertices_[k]]);

@@ -30,15 +30,38 @@ struct SlabTriangle {
 /// box is far from everything the box holds.
 struct PendingNodePair {
   std::int32_t a, b;
-  int depth;
-  std::uint32_t maskA, maskB;
+  // Kept small: a best-first traversal moves these through its heap, and the move is a good
+  // part of the cost of a node pair.
+  std::uint16_t depth;
+  std::uint8_t maskA, maskB;
   double lower;
   double nearness;  // how near the pair looks: the order among equal lower bounds (traverseTrees)
 };
 
+/// Where the last query between two meshes found its answer: the triangles of its witnesses.
+/// A planner's consecutive queries between the same meshes are near each other, so that pair's
+/// distance at the new poses is an upper bound close to the new answer before any node pair is
+/// opened (the first upper bound that sec. 6.2's rejection rule starts from). Only a hint:
+/// whatever it names is measured anew, and indices out of range are ignored.
+struct WitnessHint {
+  const Mesh* a = nullptr;
+  const Mesh* b = nullptr;
+  std::uint32_t triangleA = 0, triangleB = 0;
+};
+
 struct DistanceScratch::Buffers {
+  // Hints by mesh pair, direct-mapped on the meshes' addresses (a checker queries a robot part
+  // against a handful of environment parts in turn; a collision of two pairs costs only a hint).
+  static constexpr std::size_t kWitnessHints = 64;
+  WitnessHint witnessHints[kWitnessHints];
+  WitnessHint& hintFor(const Mesh& a, const Mesh& b) {
+    const auto key = reinterpret_cast<std::uintptr_t>(&a) * 31u + reinterpret_cast<std::uintptr_t>(&b);
+    return witnessHints[(key >> 4) % kWitnessHints];
+  }
   // The traversal's pending node pairs: a stack for validity queries, a heap for the others.
   std::vector<PendingNodePair> pendingNodePairs;
+  // Branch and bound over a subtree for a node's support point.
+  std::vector<std::int32_t> supportStack;
   // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
   // them in place (depth first, so a range holds the same set whenever it is revisited).
   std::vector<std::uint32_t> orderA, orderB;
@@ -79,6 +102,9 @@ class Query {
 
  private:
   DistanceResult finish() const;
+  /// Offers the distance of the triangles that answered the last query between these meshes
+  /// (WitnessHint), when the scratch has them.
+  void startFromWitnessHint();
   // --- stage three and the recursion (decomposition.cpp) ---
   void visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hint);
   /// Stage three from scratch: the support-plane split of sec. 6.1, then the child pairs.
@@ -113,6 +139,16 @@ class Query {
   // --- supports (eq. 4-5) over a sub-mesh's vertices, in mesh A's frame ---
   SupportPoint supportA(const SubMesh& a, const Vec3& d) const;
   SupportPoint supportB(const SubMesh& b, const Vec3& d) const;
+  // --- supports (eq. 4-5) of a tree node's sub-mesh, by branch and bound over its subtree ---
+  /// The vertex of node \p node of \p tree (mesh \p mesh) farthest along \p d (mesh frame),
+  /// searched from \p warm (a point of the node's, mesh frame); the result names a triangle of
+  /// the node's that has it as a corner.
+  static SupportPoint nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
+                                  SupportPoint warm, std::vector<std::int32_t>& stack);
+  /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
+  /// margin and offers the closest support points as an upper bound. Stops once the margin proves
+  /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).
+  double hullBound(std::int32_t a, std::int32_t b, double bound);
 
   // --- the mode's rules ---
   /// May a pair (of sub-meshes or triangles) whose distance is at least `lowerSafe` be dropped?
@@ -144,7 +180,6 @@ class Query {
   Eigen::Matrix3d rotationBA_;   // B frame -> A frame
   Vec3 translationBA_;
   Eigen::Matrix3d rotationAB_;   // directions from A frame into B frame (transpose)
-  Eigen::Matrix3d absRotationBA_;  // |rotationBA_|, for box projections
   double magnitude_ = 0.0;       // largest |coordinate| of either mesh in A's frame
   double roundoff_ = 0.0;        // kBoundSafetyUlps * eps * magnitude_
 

@@ -3,10 +3,14 @@
 // pair dropped by the cheapest sound test that proves it cannot matter.
 //
 // The paper's stages exist to find and cull without preprocessing (sec. 4-6). With trees built
-// once, the boxes already hold what GJK and the hash grid would work out per query, so neither
-// runs here: a node pair is dropped when its boxes are proven farther apart than the current
-// bound (sec. 6.2's rejection rule: for exact queries the global upper bound, for validity
-// queries the threshold D), or else the larger node is split. Leaves' triangles are tested
+// once, the boxes already hold most of what GJK and the hash grid would work out per query: a
+// node pair is dropped when its boxes are proven farther apart than the current bound (sec.
+// 6.2's rejection rule: for exact queries the global upper bound, for validity queries the
+// threshold D), along the line through their centres or their face normals (box_separation.h),
+// or else the larger node is split. Where boxes are weakest, on curved sub-meshes apart by more
+// than their size, the paper's own bound takes over: GJK on the two nodes' hulls (sec. 4), with
+// supports found by branch and bound over the subtrees, gives the support planes' margin as a
+// lower bound and the closest support points as an upper bound. Leaves' triangles are tested
 // against the other node's box and against each other's (filters that only ever prove
 // "farther"), and only the pairs no filter separates reach the exact triangle distance. A
 // validity query stops at the first triangle pair within D.
@@ -15,6 +19,7 @@
 // mode's rule); the paper's stages answer queries from scratch (decomposition.cpp).
 
 #include <algorithm>
+#include <limits>
 
 #include "adsd/triangle_distance.h"
 #include "box_separation.h"
@@ -30,9 +35,28 @@ namespace {
 /// a small robot part against a room-sized node only multiplies the pairs.
 inline double boxSize2(const OrientedBox& box) { return box.half.squaredNorm(); }
 
+/// GJK iterations a node pair's hull bound may take (hullBound): its lower bound holds at any
+/// iteration, and the first few do most of the tightening.
+constexpr int kHullBoundIterations = 3;
+/// Node pairs with fewer triangles than this on either side are left to boxes and triangles:
+/// there GJK's support descents cost more than the few pairs they could save.
+constexpr std::uint32_t kHullBoundMinTriangles = 8;
+
+/// Whether a query that lowers an upper bound should bound node pair (na, nb), whose boxes are
+/// `lower` apart, by GJK on the nodes' hulls (sec. 4). Only pairs apart by more than their
+/// circumscribed radii: there the hulls' margin lies close to the sub-meshes' distance (the near
+/// sides of sub-meshes seen from afar are on their hulls), so one GJK run can drop a pair that
+/// the boxes, fat around curved sub-meshes, would have split down to the leaves, and a tolerance
+/// query can settle it within its tolerance. Closer pairs' hulls overlap or nearly, and GJK
+/// there is cost without a bound.
+inline bool worthHullBound(const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb, double lower) {
+  return lower > na.box.radius + nb.box.radius && na.t1 - na.t0 >= kHullBoundMinTriangles &&
+         nb.t1 - nb.t0 >= kHullBoundMinTriangles;
+}
+
 /// A leaf's mask with all its triangles live (bit k for triangle t0 + k).
-constexpr std::uint32_t kAllLeafTriangles = ~0u;
-static_assert(MeshHierarchy::kLeafTriangles < 32, "a leaf's live triangles are the bits of a 32-bit mask");
+constexpr std::uint8_t kAllLeafTriangles = 0xFF;
+static_assert(MeshHierarchy::kLeafTriangles <= 8, "a leaf's live triangles are the bits of an 8-bit mask");
 
 /// The bits a leaf's triangles occupy in a mask.
 inline std::uint32_t leafBits(const MeshHierarchy::Node& leaf) { return (1u << (leaf.t1 - leaf.t0)) - 1u; }
@@ -90,19 +114,16 @@ void Query::traverseTrees() {
   const bool lowersUpperBound = options_.mode != QueryMode::threshold;
   // Queries that lower an upper bound take one from each pair of nodes they test: the distance
   // between the nodes' representative points (MeshHierarchy::Node). Without it, best first by
-  // lower bound found the closest triangles late (office, exact: at the 63rd of 84 pairs taken,
-  // with 30 of 36 triangle tests spent before), while the proof of the minimum alone, told the
-  // answer, cost 1/3 of the time (bench_scene_counters, mode known: 13.6 against 43 us). Ordering
-  // equal lower bounds by the mean of that distance and the boxes' nearness, instead of nearness
-  // alone, took office exact from 0.99 to 0.60 of FCL's time and the bug trap from 0.96 to 0.86
-  // in one run. A validity query keeps nearness alone and offers no such points: it ends at a
-  // pair within D, which two representative points seldom are (at D = 1 % of the robot, offering
-  // them made bench_scene_counters' threshold queries 5-10 % slower).
+  // lower bound finds the closest triangles late, after most of the triangle tests, while the
+  // proof of the minimum alone, told the answer, is a fraction of the work (bench_scene_counters,
+  // mode known, counts both). Equal lower bounds are ordered by the mean of that distance and the
+  // boxes' nearness. A validity query keeps nearness alone and offers no such points: it ends at
+  // a pair within D, which two representative points seldom are.
   // Tests the pair (a, b) by its boxes. One of the two comes placed in the other mesh's frame:
   // placedB (b's box in A's frame) or placedA (a's box in B's frame), whichever node the split
   // left whole, so that both children of a split are tested against one placed box. Returns
   // false when the pair was dropped, else fills `out`.
-  auto test = [&](std::int32_t a, std::int32_t b, int depth, std::uint32_t maskA, std::uint32_t maskB,
+  auto test = [&](std::int32_t a, std::int32_t b, int depth, std::uint8_t maskA, std::uint8_t maskB,
                   const OrientedBox* placedA, const OrientedBox* placedB, Pending& out) {
     ++counters_.subMeshPairs;
     counters_.maxDepth = std::max(counters_.maxDepth, depth);
@@ -114,22 +135,22 @@ void Query::traverseTrees() {
       return false;
     }
     if (!lowersUpperBound) {
-      out = Pending{a, b, depth, maskA, maskB, boxes.lower, boxes.nearness};
+      out = Pending{a, b, static_cast<std::uint16_t>(depth), maskA, maskB, boxes.lower, boxes.nearness};
       return true;
     }
     // The two nodes' representative points: a real distance, so a candidate upper bound, and
     // with the boxes' nearness the pair's estimate for the order.
     const MeshHierarchy::Node& na = nodesA[a];
     const MeshHierarchy::Node& nb = nodesB[b];
-    const Vec3 onA = a_.corner(na.repTriangle, static_cast<int>(na.repCorner));
-    const Vec3 onB = toA(b_.corner(nb.repTriangle, static_cast<int>(nb.repCorner)));
+    const Vec3& onA = na.repPoint;
+    const Vec3 onB = toA(nb.repPoint);
     const double between = (onA - onB).norm();
     if (between < best_) {
       offer(onA, onB, between, na.repTriangle, false, nb.repTriangle, false);
       limit = pruneBound();
       bound = limit + roundoff_;
     }
-    out = Pending{a, b, depth, maskA, maskB, boxes.lower, 0.5 * (between + boxes.nearness)};
+    out = Pending{a, b, static_cast<std::uint16_t>(depth), maskA, maskB, boxes.lower, 0.5 * (between + boxes.nearness)};
     return true;
   };
   // When a pair is taken (not when it is first tested: a best-first query drops many pairs
@@ -138,22 +159,20 @@ void Query::traverseTrees() {
   // leaf's own box is tight already, the larger one's may be fat: a floor and a wall triangle of
   // an environment fill a room corner). Each mesh's triangles are tested in their own frame,
   // against the other box placed there. Returns false when no triangle of a leaf is left.
-  // Moving this from the test to the taking measured ~10 % less time on the bug trap's exact
-  // queries (bench_scene_counters).
   auto refineLeaves = [&](Pending& pair, const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb) {
     // Two leaves meeting: queries that lower an upper bound refine both leaves' triangles against
-    // the other's box, since every triangle pair left costs an 11-axis filter and often an exact
-    // test (bench_scene_counters, bug trap exact: ~8 % less time); a validity query, which mostly
-    // ends at the first pair or proves the boxes apart, refines the larger leaf only.
+    // the other's box, since every triangle pair left costs a separating-axis filter and often an
+    // exact test; a validity query, which mostly ends at the first pair or proves the boxes apart,
+    // refines the larger leaf only.
     const bool bothLeaves = na.isLeaf() && nb.isLeaf() && lowersUpperBound;
     const bool refineA = na.isLeaf() && (!nb.isLeaf() || boxSize2(na.box) > boxSize2(nb.box) || bothLeaves);
     const bool refineB = nb.isLeaf() && (!refineA || bothLeaves);
     if (refineA) {
-      pair.maskA = trianglesNearBox(a_, orderA_, na, pair.maskA, placedBox(nb.box, rotationBA_, translationBA_), bound);
+      pair.maskA = static_cast<std::uint8_t>(trianglesNearBox(a_, orderA_, na, pair.maskA, placedBox(nb.box, rotationBA_, translationBA_), bound));
       if (pair.maskA == 0) return false;
     }
     if (refineB) {
-      pair.maskB = trianglesNearBox(b_, orderB_, nb, pair.maskB, placedBox(na.box, rotationAB_, translationAB), bound);
+      pair.maskB = static_cast<std::uint8_t>(trianglesNearBox(b_, orderB_, nb, pair.maskB, placedBox(na.box, rotationAB_, translationAB), bound));
       if (pair.maskB == 0) return false;
     }
     return true;
@@ -163,10 +182,9 @@ void Query::traverseTrees() {
   // nearness alone (BoxPairBound): it mostly ends at the first triangle pair within D, or else
   // must visit every pair its boxes cannot drop, in any order. Queries that lower an upper bound
   // go best first: always the pending pair of smallest lower bound, ties (common among
-  // overlapping boxes, whose bound is 0) by the estimate `test` gives. Depth first had found the
-  // final upper bound late: on bench_scene_counters' bug trap, exact queries then took 266 node
-  // pairs and 102 triangle tests, against 120 and 6 when started from the final distance; best
-  // first took 181 and 29, and on the alpha puzzle 907 node pairs instead of 2 276.
+  // overlapping boxes, whose bound is 0) by the estimate `test` gives. Depth first finds the
+  // final upper bound late and so opens far more node pairs and triangle pairs before it
+  // (bench_scene_counters counts both).
   auto takenBefore = [lowersUpperBound](const Pending& x, const Pending& y) {
     if (!lowersUpperBound) return x.nearness < y.nearness;
     return x.lower < y.lower || (x.lower == y.lower && x.nearness < y.nearness);
@@ -186,6 +204,16 @@ void Query::traverseTrees() {
     return next;
   };
 
+  // A pair far apart for its size: the hulls' margin raises its lower bound,
+  // and GJK's closest support points may lower the upper bound (hullBound). True when the pair
+  // is then proven farther than the bound, so that it is dropped unopened.
+  auto raiseByHullBound = [&](Pending& pair) {
+    pair.lower = std::max(pair.lower, hullBound(pair.a, pair.b, bound));
+    limit = pruneBound();
+    bound = limit + roundoff_;
+    return pair.lower > bound;
+  };
+
   Pending p;
   bool have = false;
   if (lowersUpperBound) {
@@ -194,12 +222,8 @@ void Query::traverseTrees() {
   } else {
     // A validity query compares the roots' circumscribed spheres only and leaves the separating
     // axes to the children. Its callers ask about pairs a broad phase could not drop, whose whole
-    // boxes nearly always overlap: 99.5 % of the office's pair queries on the states PRM checks
-    // (bench_checker_calls --from prm; counted in session 7 with a temporary counter). There the
-    // roots' full test (all 15 axes, as none separates) decided nothing; leaving it out, and
-    // placing only B's root centre, took a pair query from 3 950 to 3 070 instructions (callgrind
-    // over 20 000 recorded PRM states, about 81 800 pair queries: PRM's threads make two
-    // recordings differ slightly; README, planning).
+    // boxes nearly always overlap (bench_checker_calls --from prm replays such states), so the
+    // roots' full test mostly decides nothing; only B's root centre is placed for the spheres.
     ++counters_.subMeshPairs;
     const double sphereGap = (toA(nodesB[0].box.center) - nodesA[0].box.center).norm() - nodesA[0].box.radius -
                              nodesB[0].box.radius;
@@ -208,7 +232,8 @@ void Query::traverseTrees() {
       dropped();
     } else {
       p = Pending{0, 0, 0, kAllLeafTriangles, kAllLeafTriangles, 0.0, sphereGap};
-      have = true;
+      startFromWitnessHint();
+      have = !done_;
     }
   }
   while (have && !done_) {
@@ -219,6 +244,10 @@ void Query::traverseTrees() {
         counters_.pairsRejectedByBounds += pending.size();
         return;
       }
+    } else if (lowersUpperBound && worthHullBound(nodesA[p.a], nodesB[p.b], p.lower) &&
+               raiseByHullBound(p)) {
+      ++counters_.pairsRejectedByBounds;
+      dropped();
     } else if (!refineLeaves(p, nodesA[p.a], nodesB[p.b])) {
       ++counters_.pairsRejectedByBounds;
       dropped();
@@ -256,6 +285,74 @@ void Query::traverseTrees() {
     have = !pending.empty();
     if (have) p = takeNext();
   }
+}
+
+SupportPoint Query::nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
+                                SupportPoint warm, std::vector<std::int32_t>& stack) {
+  const std::vector<MeshHierarchy::Node>& nodes = tree.nodes();
+  // Start from `warm`, a point of the node's (the last support point GJK found, or the node's
+  // representative point): every box that cannot beat it is skipped unopened, and GJK's
+  // directions change little from one iteration to the next.
+  double bestValue = d.dot(warm.point);
+  SupportPoint best = warm;
+  stack.clear();
+  stack.push_back(node);
+  while (!stack.empty()) {
+    const std::int32_t i = stack.back();
+    stack.pop_back();
+    const MeshHierarchy::Node& n = nodes[i];
+    if (n.box.support(d) <= bestValue) continue;  // nothing in this box beats the best vertex
+    if (n.isLeaf()) {
+      std::uint32_t bestVertex = UINT32_MAX;
+      for (std::uint32_t k = n.v0; k < n.v1; ++k) {
+        const std::uint32_t v = tree.leafVertices()[k];
+        const double value = d.dot(mesh.vertices()[v]);
+        if (value > bestValue) {
+          bestValue = value;
+          bestVertex = v;
+        }
+      }
+      if (bestVertex != UINT32_MAX) {
+        best.point = mesh.vertices()[bestVertex];
+        for (std::uint32_t k = n.t0; k < n.t1; ++k) {
+          const TriangleIndices& t = mesh.triangles()[tree.order()[k]];
+          if (t[0] == bestVertex || t[1] == bestVertex || t[2] == bestVertex) best.feature = tree.order()[k];
+        }
+      }
+      continue;
+    }
+    // The child whose box reaches farther along d last, so it is taken first.
+    const bool leftFirst = nodes[n.left].box.support(d) >= nodes[n.right].box.support(d);
+    stack.push_back(leftFirst ? n.right : n.left);
+    stack.push_back(leftFirst ? n.left : n.right);
+  }
+  return best;
+}
+
+double Query::hullBound(std::int32_t a, std::int32_t b, double bound) {
+  // Each side's last support point (in its own mesh frame) warms the next search.
+  const MeshHierarchy::Node& na = treeA_->nodes()[a];
+  const MeshHierarchy::Node& nb = treeB_->nodes()[b];
+  SupportPoint lastA{na.repPoint, na.repTriangle, false}, lastB{nb.repPoint, nb.repTriangle, false};
+  auto supportOfA = [&](const Vec3& d) {
+    lastA = nodeSupport(a_, *treeA_, a, d, lastA, buf_.supportStack);
+    return lastA;
+  };
+  auto supportOfB = [&](const Vec3& dInA) {
+    lastB = nodeSupport(b_, *treeB_, b, rotationAB_ * dInA, lastB, buf_.supportStack);
+    SupportPoint s = lastB;
+    s.point = toA(s.point);
+    return s;
+  };
+  int iterations = 0;
+  auto enough = [&](double lowerSafe) { return lowerSafe > bound || ++iterations >= kHullBoundIterations; };
+  const Vec3 start = treeA_->nodes()[a].box.center - toA(treeB_->nodes()[b].box.center);
+  const GjkResult g = runGjk(supportOfA, supportOfB, start, enough, magnitude_);
+  ++counters_.gjkCalls;
+  counters_.gjkIterations += static_cast<std::uint64_t>(g.iterations);
+  counters_.gjkMaxIterations = std::max(counters_.gjkMaxIterations, g.iterations);
+  if (g.closest.distance < best_) offer(g.closest);
+  return g.lower - roundoff_;
 }
 
 void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, const MeshHierarchy::Node& nb,

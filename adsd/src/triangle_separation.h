@@ -12,8 +12,9 @@ namespace adsd::detail {
 
 /// \brief True when triangle p (three corners) and triangle q (three corners, same frame) are
 /// proven farther apart than \p bound (>= 0, length units, already including the caller's
-/// roundoff allowance) along a coordinate axis, either triangle's face normal or the cross
-/// product of an edge of each (the separating axes of two triangles).
+/// roundoff allowance) along a coordinate axis, the line through their centroids, either
+/// triangle's face normal or the cross product of an edge of each (the separating axes of two
+/// triangles).
 inline bool trianglesFartherThan(const Vec3 p[3], const Vec3 q[3], double bound) {
   const double bound2 = bound * bound;
   // Coordinate axes (the two triangles' boxes): the gap vector's length bounds the distance.
@@ -51,6 +52,14 @@ inline bool trianglesFartherThan(const Vec3 p[3], const Vec3 q[3], double bound)
     const double g = std::max(loQ - hiP, loP - hiQ);
     return g > 0.0 && g * g > bound2 * norm2;
   };
+  // The line through the centroids first: for triangles apart by more than their size it is near
+  // the direction of their closest points, which no face or edge axis is when those points are
+  // corners (vertex-vertex and vertex-edge minima, the common case between curved surfaces).
+  if (apartAlong((rq[0][0] + rq[1][0] + rq[2][0] - rp[1][0] - rp[2][0]),
+                 (rq[0][1] + rq[1][1] + rq[2][1] - rp[1][1] - rp[2][1]),
+                 (rq[0][2] + rq[1][2] + rq[2][2] - rp[1][2] - rp[2][2]))) {
+    return true;
+  }
   // Edge vectors: ep[i] = p[i+1] - p[i], eq[j] = q[j+1] - q[j].
   double ep[3][3], eq[3][3];
   for (int i = 0; i < 3; ++i) {

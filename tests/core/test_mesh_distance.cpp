@@ -169,8 +169,11 @@ class MeshDistanceAgainstOracle : public ::testing::Test {
         if (stats.failuresByKind[kind]++ < 3) ADD_FAILURE() << where.str() << what;
       };
 
-      // Exact mode.
-      const DistanceResult exact = distance(scene.a, poseA, scene.b, poseB, DistanceOptions::exactDistance(), scratch);
+      // Exact mode, on a scratch without a witness hint, so that the counters below show the
+      // traversal or recursion itself; every later query of this pose reuses `scratch`, whose hint
+      // names the last answer's triangles (a start the answer must not depend on).
+      DistanceScratch cold;
+      const DistanceResult exact = distance(scene.a, poseA, scene.b, poseB, DistanceOptions::exactDistance(), cold);
       const double error = std::abs(exact.distance - o.value);
       {
         std::ostringstream got;
@@ -395,6 +398,52 @@ TEST(MeshDistance, BadOptionsAndPosesAreInputErrors) {
   const DistanceResult r = distance(box, Pose::Identity(), box, apart);
   EXPECT_NEAR(r.distance, 1.0, 1e-15);
   EXPECT_EQ(r.status, DistanceStatus::exact);
+}
+
+/// A scratch remembers the last answer's triangles per mesh pair and starts the next query from
+/// their distance (WitnessHint). Along a path of nearby poses, as a planner asks, every mode must
+/// answer exactly what a scratch without hints answers, and the hint must save work: fewer node
+/// pairs in total than the cold queries (counted, not timed).
+TEST(MeshDistance, WitnessHintsChangeNoAnswer) {
+  for (const bool trees : {false, true}) {
+    Mesh a = shapes::torus(1.0, 0.44, 40, 14);
+    Mesh b = shapes::knottedTube(1.0, 0.25, 2, 3, 100, 10);
+    if (trees) {
+      a.buildHierarchy();
+      b.buildHierarchy();
+    }
+    DistanceScratch warm;
+    std::uint64_t warmPairs = 0, coldPairs = 0;
+    for (int i = 0; i < 120; ++i) {
+      // B circles A at a distance that goes from contact to 1.5 diagonals and back.
+      const double angle = 0.02 * i;
+      const Pose poseB = Eigen::Translation3d(Vec3(std::cos(angle), std::sin(angle), 0.2) * (2.0 + 2.5 * std::sin(0.05 * i))) *
+                         Eigen::AngleAxisd(0.03 * i, Vec3(1, 2, 3).normalized());
+      for (const DistanceOptions& options :
+           {DistanceOptions::exactDistance(), DistanceOptions::withTolerance(0.0, 0.01), DistanceOptions::cappedAt(1.0),
+            DistanceOptions::aboveThreshold(0.05)}) {
+        SCOPED_TRACE(std::string(trees ? "trees" : "from scratch") + ", pose " + std::to_string(i) + ", mode " +
+                     std::to_string(static_cast<int>(options.mode)));
+        DistanceScratch cold;
+        const DistanceResult r = distance(a, Pose::Identity(), b, poseB, options, warm);
+        const DistanceResult c = distance(a, Pose::Identity(), b, poseB, options, cold);
+        EXPECT_EQ(r.status, c.status);
+        if (options.mode == QueryMode::exact || r.status == DistanceStatus::exact) {
+          EXPECT_NEAR(r.distance, c.distance, 1e-12);
+        }
+        if (options.mode == QueryMode::tolerance) {
+          // Both intervals contain the distance, so they overlap.
+          EXPECT_LE(r.lower, c.upper + 1e-12);
+          EXPECT_LE(c.lower, r.upper + 1e-12);
+        }
+        if (options.mode == QueryMode::exact) {
+          warmPairs += r.counters.subMeshPairs;
+          coldPairs += c.counters.subMeshPairs;
+        }
+      }
+    }
+    EXPECT_LT(warmPairs, coldPairs) << (trees ? "trees" : "from scratch");
+  }
 }
 
 }  // namespace

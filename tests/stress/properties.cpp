@@ -181,7 +181,8 @@ void checkHierarchy(const Mesh& mesh, const std::string& query, std::vector<Fail
     // The representative point the traversal offers as an upper bound must be a corner of one of
     // the node's own triangles, or the bound would not be a distance between the two meshes.
     const auto first = tree->order().begin() + node.t0, last = tree->order().begin() + node.t1;
-    if (std::find(first, last, node.repTriangle) == last || node.repCorner > 2) {
+    if (std::find(first, last, node.repTriangle) == last || node.repCorner > 2 ||
+        node.repPoint != mesh.corner(node.repTriangle, static_cast<int>(node.repCorner))) {
       out.push_back({query + ": node's representative point is not on its triangles",
                      "node " + std::to_string(i) + ": triangle " + std::to_string(node.repTriangle) + " corner " +
                          std::to_string(node.repCorner)});

@@ -121,6 +121,11 @@ struct DistanceResult {
 
 /// \brief Per-thread working memory for queries. Reused, it makes queries allocation-free once
 /// it has grown to the meshes' size. Not shareable between threads running queries at once.
+///
+/// It also remembers, per mesh pair (by address), the triangles of the last answer: the next
+/// query between the same meshes measures them first, which gives it an upper bound close to the
+/// answer when the poses moved little (a planner's consecutive checks). The hint only changes how
+/// fast the answer is proven, never the answer.
 class DistanceScratch {
  public:
   DistanceScratch();

@@ -49,6 +49,10 @@ class MeshHierarchy {
     /// the traversal's cheap upper bound and ordering estimate for a node pair (sec. 4's upper
     /// bound from support points, taken from the tree instead of GJK).
     std::uint32_t repTriangle = 0, repCorner = 0;
+    /// That corner's position (mesh frame), kept beside the box: the traversal reads it for every
+    /// node pair it tests, and through the triangle and vertex arrays that is two dependent loads
+    /// from memory the box did not bring into cache.
+    Vec3 repPoint = Vec3::Zero();
     std::int32_t left = -1, right = -1;  ///< children, -1 for a leaf
     bool isLeaf() const { return left < 0; }
   };
