@@ -1,0 +1,491 @@
+/// \file
+/// \brief Every query mode against FCL, band by band: near contact, mid range, far apart, the
+/// uniform states of a planning problem's sampler, and in collision.
+///
+///   bench_bands [--scenes a,b,...] [--pairs A.off:B.off,...] [--poses N] [--rounds R]
+///               [--seed S] [--csv FILE] [--quick]
+///
+/// Why bands: a planner asks for clearance at every distance, mostly far from contact, while
+/// bench_scenes places its queries near contact only. Each band is drawn with FCL (placement
+/// never uses the code under test); both libraries keep their trees (ours: buildHierarchy, FCL:
+/// prebuilt OBBRSS). Methods, interleaved query by query (timing.h): our exact distance, our 1 %
+/// tolerance, our validity query (D = 0), our distance capped at 5 % of the reference length, FCL's
+/// exact distance and FCL's collide. Bands (fractions of the reference length L: the larger
+/// bounding-box diagonal of a mesh pair, the robot's diagonal for a planning problem):
+///
+/// | band      | how the poses are drawn                                                     |
+/// |-----------|-----------------------------------------------------------------------------|
+/// | near      | gaps log-uniform in [0.1 %, 5 %] of L                                       |
+/// | mid       | gaps log-uniform in [5 %, 30 %] of L                                        |
+/// | far       | gaps log-uniform in [30 %, 100 %] of L                                      |
+/// | uniform   | planning problems: uniform states over the environment's box (valid or not) |
+/// | collision | in contact (FCL's collide): validity only, the distance modes answer 0      |
+///
+/// Mesh pairs approach along a random line (close_poses.h, without its hull-overlap filter: far
+/// pairs' hulls are apart); a problem's robot slides from a random state until its clearance is
+/// the target (near_obstacle_poses.h). Every exact answer must agree with FCL's within 1e-9 L and
+/// every validity answer with FCL's collide; the program exits 3 otherwise, so a speed-up cannot
+/// hide a wrong answer. Prints per scene and band the median and 90th percentile microseconds, the
+/// ratios of medians, and the median node pairs of our exact and tolerance queries; then a
+/// summary per band over the scenes (median and worst ratio). --csv writes one row per query.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <boost/program_options.hpp>
+
+#include "adsd/distance.h"
+#include "adsd/error.h"
+#include "adsd/io/load_mesh.h"
+#include "fcl_models.h"
+#include "fcl_placement.h"
+#include "scenes/close_poses.h"
+#include "scenes/distance_scenes.h"
+#include "scenes/near_obstacle_poses.h"
+#include "scenes/seeded_random.h"
+#include "timing.h"
+
+namespace {
+
+using adsd::Mesh;
+using adsd::Pose;
+using adsd::Vec3;
+using adsd::bench::PosePair;
+
+struct Options {
+  std::vector<std::string> scenes;
+  std::vector<std::pair<std::string, std::string>> pairs;
+  std::size_t poses = 40;
+  int rounds = 3;
+  std::uint64_t seed = 2611;
+  std::string csv;
+  std::string summaryMarkdown;
+  std::vector<std::string> bands;  // empty: every band
+};
+
+/// One band's poses and how they were drawn.
+struct Band {
+  std::string name;
+  double minFraction = 0.0, maxFraction = 0.0;  // gap band (fractions of L); 0, 0: not a gap band
+  std::vector<PosePair> poses;
+};
+
+/// The cap of the capped mode, as a fraction of L: a clearance objective that saturates at a
+/// safety margin (a planner needs no clearance beyond it).
+constexpr double kCapFraction = 0.05;
+/// The relative tolerance of the tolerance mode (the 1 %).
+constexpr double kRelativeTolerance = 0.01;
+/// Largest disagreement with FCL's exact distance, as a fraction of L, before the run fails: both
+/// are exact to about 1e-15 L; FCL's triangle distance loses a few digits on slivers.
+constexpr double kAgreement = 1e-9;
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (!item.empty()) out.push_back(item);
+  }
+  return out;
+}
+
+Options parse(int argc, char** argv) {
+  namespace po = boost::program_options;
+  Options o;
+  std::string scenes = "cows,bunnies,camels", pairs, bandList;
+  po::options_description d("bench_bands: every query mode against FCL, band by band (near, mid, far, uniform, collision)");
+  d.add_options()("help,h", "this text")(
+      "scenes", po::value(&scenes)->default_value(scenes),
+      "scenes of bench_scenes (mesh pairs and problem_NAME planning problems), comma-separated; 'all' for every rigid one")(
+      "pairs", po::value(&pairs), "more mesh pairs, FILE_A:FILE_B,... (any mesh files adsd reads)")(
+      "poses", po::value(&o.poses)->default_value(o.poses), "queries per band")(
+      "rounds", po::value(&o.rounds)->default_value(o.rounds), "timed rounds over each band's queries")(
+      "seed", po::value(&o.seed)->default_value(o.seed), "seed of every band's drawing")(
+      "bands", po::value(&bandList), "bands to run, comma-separated (default: near,mid,far,uniform,collision)")(
+      "summary-md", po::value(&o.summaryMarkdown), "also write the per-band summary as a Markdown table to this file")(
+      "csv", po::value(&o.csv), "one row per query and method: scene, band, method, distance, microseconds")(
+      "quick", "10 poses, 1 round: a smoke run");
+  po::variables_map vm;
+  try {
+    po::store(po::parse_command_line(argc, argv, d), vm);
+    po::notify(vm);
+  } catch (const po::error& e) {
+    std::fprintf(stderr, "bench_bands: %s\n", e.what());
+    std::exit(2);
+  }
+  if (vm.count("help")) {
+    std::ostringstream text;
+    text << d;
+    std::printf("%s", text.str().c_str());
+    std::exit(0);
+  }
+  if (vm.count("quick")) o.poses = 10, o.rounds = 1;
+  if (o.poses == 0 || o.rounds <= 0) {
+    std::fprintf(stderr, "bench_bands: --poses and --rounds must be positive\n");
+    std::exit(2);
+  }
+  o.bands = splitList(bandList);
+  for (const std::string& band : o.bands) {
+    if (band != "near" && band != "mid" && band != "far" && band != "uniform" && band != "collision") {
+      std::fprintf(stderr, "bench_bands: unknown band '%s' (near, mid, far, uniform, collision)\n", band.c_str());
+      std::exit(2);
+    }
+  }
+  if (scenes == "all") {
+    for (const std::string& name : adsd::bench::distanceSceneNames()) {
+      if (name != "teddies_deforming") o.scenes.push_back(name);
+    }
+  } else {
+    o.scenes = splitList(scenes);
+  }
+  for (const std::string& pair : splitList(pairs)) {
+    const auto colon = pair.find(':');
+    if (colon == std::string::npos) {
+      std::fprintf(stderr, "bench_bands: --pairs wants FILE_A:FILE_B, got '%s'\n", pair.c_str());
+      std::exit(2);
+    }
+    o.pairs.emplace_back(pair.substr(0, colon), pair.substr(colon + 1));
+  }
+  return o;
+}
+
+/// Uniform states over \p region: SE(2) (yaw, z = 0) or SE(3), as OMPL's samplers draw them.
+std::vector<PosePair> uniformStates(const Eigen::AlignedBox3d& region, bool planar, std::size_t count,
+                                    adsd::bench::SeededRandom& random, const adsd::bench::GapFunction* keepIfColliding) {
+  std::vector<PosePair> out;
+  for (std::size_t attempt = 0; out.size() < count; ++attempt) {
+    if (attempt > 200000) throw std::runtime_error("too few states in collision among 200000 uniform ones");
+    PosePair p;
+    const Vec3 lo = region.min(), hi = region.max();
+    if (planar) {
+      p.a = Eigen::Translation3d(random.uniform(lo.x(), hi.x()), random.uniform(lo.y(), hi.y()), 0.0) *
+            Eigen::AngleAxisd(random.uniform(-M_PI, M_PI), Vec3::UnitZ());
+    } else {
+      p.a = Eigen::Translation3d(random.uniform(lo.x(), hi.x()), random.uniform(lo.y(), hi.y()),
+                                 random.uniform(lo.z(), hi.z())) *
+            random.rotation();
+    }
+    if (keepIfColliding && (*keepIfColliding)(p.a, p.b) > 0.0) continue;
+    out.push_back(p);
+  }
+  return out;
+}
+
+/// Mesh-pair poses in contact: B's centre placed at a random offset within half the radii's sum
+/// of A's, random turns, kept when FCL says they collide.
+std::vector<PosePair> collidingPairPoses(const Mesh& a, const Mesh& b, std::size_t count,
+                                         adsd::bench::SeededRandom& random, const adsd::bench::GapFunction& gap) {
+  const Vec3 ca = a.bounds().center(), cb = b.bounds().center();
+  const double reach = 0.25 * (a.bounds().diagonal().norm() + b.bounds().diagonal().norm());
+  std::vector<PosePair> out;
+  for (std::size_t attempt = 0; out.size() < count; ++attempt) {
+    if (attempt > 200000) throw std::runtime_error("too few colliding poses among 200000");
+    PosePair p;
+    p.a = Pose::Identity();
+    p.a.rotate(random.rotation()).translate(-ca);
+    p.b = Pose::Identity();
+    p.b.translate(random.uniform(0.0, reach) * random.direction()).rotate(random.rotation()).translate(-cb);
+    if (gap(p.a, p.b) > 0.0) continue;
+    out.push_back(p);
+  }
+  return out;
+}
+
+struct BandResult {
+  std::string scene, band;
+  double ours = 0, tolerance = 0, validity = 0, capped = 0, fclDistance = 0, fclCollide = 0;  // median us
+  double oursP90 = 0, fclDistanceP90 = 0;
+  double nodePairsExact = 0, nodePairsTolerance = 0, nodePairsValidity = 0;  // medians
+  double worstError = 0;          // max |ours - FCL| / L
+  double worstToleranceError = 0; // max (tolerance answer - exact) / exact
+  bool distances = true;          // false: the collision band (validity only)
+};
+
+int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool planning, bool planar,
+             double length, const Options& o, std::vector<BandResult>& results, std::ofstream* csv) {
+  Mesh ta = a, tb = b;
+  ta.buildHierarchy();
+  tb.buildHierarchy();
+  const auto fa = adsd::bench::buildObbrss(a.vertices(), adsd::bench::fclTriangles(a));
+  const auto fb = adsd::bench::buildObbrss(b.vertices(), adsd::bench::fclTriangles(b));
+  const adsd::bench::GapFunction gap = [&](const Pose& pa, const Pose& pb) {
+    return std::max(0.0, adsd::bench::fclDistance(*fa, pa, *fb, pb).min_distance);
+  };
+  adsd::bench::SeededRandom random(o.seed ^ std::hash<std::string>{}(sceneName));
+
+  std::vector<Band> bands = {{"near", 0.001, 0.05, {}}, {"mid", 0.05, 0.3, {}}, {"far", 0.3, 1.0, {}}};
+  for (Band& band : bands) {
+    if (planning) {
+      adsd::bench::NearObstacleSpec spec;
+      spec.count = o.poses;
+      spec.seed = random.next();
+      spec.minGapFraction = band.minFraction;
+      spec.maxGapFraction = band.maxFraction;
+      spec.planar = planar;
+      spec.region = b.bounds();
+      spec.maxAttempts = 20 * o.poses + 2000;
+      try {
+        band.poses = adsd::bench::makeNearObstaclePoses(a, b, spec, gap);
+      } catch (const std::runtime_error& e) {
+        // Some problems leave no room for a band (the alpha puzzle's robot is never 30 % of its
+        // size from every obstacle inside the environment's box): said, and the band left out.
+        std::printf("%-24s %-9s not drawn: %s\n", sceneName.c_str(), band.name.c_str(), e.what());
+      }
+    } else {
+      adsd::bench::ClosePoseSpec spec;
+      spec.count = o.poses;
+      spec.seed = random.next();
+      spec.minGapFraction = band.minFraction;
+      spec.maxGapFraction = band.maxFraction;
+      band.poses = adsd::bench::makeClosePoses(a, b, spec, gap, [](const Pose&, const Pose&) { return true; });
+    }
+  }
+  if (planning) {
+    bands.push_back({"uniform", 0, 0, uniformStates(b.bounds(), planar, o.poses, random, nullptr)});
+    bands.push_back({"collision", 0, 0, uniformStates(b.bounds(), planar, o.poses, random, &gap)});
+  } else {
+    bands.push_back({"collision", 0, 0, collidingPairPoses(a, b, o.poses, random, gap)});
+  }
+
+  int status = 0;
+  // One scratch per method: the scratch remembers the last answer's witness triangles (a hint for
+  // the next query), and methods run back to back on the same pose, so a shared scratch would hand
+  // each method the answer of the one before it. Per method, the hint comes from another pose of
+  // the band, as it would from a planner's previous, unrelated query.
+  adsd::DistanceScratch scratchExact, scratchTolerance, scratchCapped, scratchValidity;
+  for (const Band& band : bands) {
+    if (!o.bands.empty() && std::find(o.bands.begin(), o.bands.end(), band.name) == o.bands.end()) continue;
+    const std::size_t n = band.poses.size();
+    if (n == 0) continue;
+    const bool distances = band.name != "collision";
+    std::vector<double> exact(n), tolerance(n), capped(n), fclD(n);
+    std::vector<char> freeOurs(n), freeFcl(n);
+    std::vector<double> pairsExact(n), pairsTolerance(n), pairsValidity(n);
+    auto query = [&](std::size_t i, const adsd::DistanceOptions& options, adsd::DistanceScratch& scratch) {
+      const PosePair& p = band.poses[i];
+      return adsd::distance(ta, p.a, tb, p.b, options, scratch);
+    };
+    std::vector<adsd::bench::TimedMethod> methods;
+    if (distances) {
+      methods.push_back({"exact", [&](std::size_t i) {
+                           const adsd::DistanceResult r = query(i, adsd::DistanceOptions::exactDistance(), scratchExact);
+                           exact[i] = r.distance;
+                           pairsExact[i] = static_cast<double>(r.counters.subMeshPairs);
+                         }, {}, {}});
+      methods.push_back({"tolerance", [&](std::size_t i) {
+                           const adsd::DistanceResult r = query(i, adsd::DistanceOptions::withTolerance(0.0, kRelativeTolerance), scratchTolerance);
+                           tolerance[i] = r.distance;
+                           pairsTolerance[i] = static_cast<double>(r.counters.subMeshPairs);
+                         }, {}, {}});
+      methods.push_back({"capped", [&](std::size_t i) {
+                           capped[i] = query(i, adsd::DistanceOptions::cappedAt(kCapFraction * length), scratchCapped).distance;
+                         }, {}, {}});
+      methods.push_back({"fcl_distance", [&](std::size_t i) {
+                           const PosePair& p = band.poses[i];
+                           fclD[i] = std::max(0.0, adsd::bench::fclDistance(*fa, p.a, *fb, p.b).min_distance);
+                         }, {}, {}});
+    }
+    methods.push_back({"validity", [&](std::size_t i) {
+                         const adsd::DistanceResult r = query(i, adsd::DistanceOptions::aboveThreshold(0.0), scratchValidity);
+                         freeOurs[i] = r.status == adsd::DistanceStatus::aboveThreshold;
+                         pairsValidity[i] = static_cast<double>(r.counters.subMeshPairs);
+                       }, {}, {}});
+    methods.push_back({"fcl_collide", [&](std::size_t i) {
+                         const PosePair& p = band.poses[i];
+                         freeFcl[i] = !adsd::bench::fclCollide(*fa, p.a, *fb, p.b);
+                       }, {}, {}});
+    adsd::bench::runInterleaved(methods, n, o.rounds);
+
+    BandResult r;
+    r.scene = sceneName;
+    r.band = band.name;
+    r.distances = distances;
+    auto med = [&](const std::string& name) {
+      for (const auto& m : methods) {
+        if (m.name == name) return adsd::bench::median(m.micros);
+      }
+      return 0.0;
+    };
+    auto p90 = [&](const std::string& name) {
+      for (const auto& m : methods) {
+        if (m.name == name) return adsd::bench::p90(m.micros);
+      }
+      return 0.0;
+    };
+    r.validity = med("validity");
+    r.nodePairsValidity = adsd::bench::median(pairsValidity);
+    r.fclCollide = med("fcl_collide");
+    std::size_t validityDisagreements = 0;
+    for (std::size_t i = 0; i < n; ++i) validityDisagreements += freeOurs[i] != freeFcl[i];
+    if (validityDisagreements > 0) {
+      std::fprintf(stderr, "bench_bands: %s %s: %zu validity answers differ from FCL's collide\n", sceneName.c_str(),
+                   band.name.c_str(), validityDisagreements);
+      status = 3;
+    }
+    if (distances) {
+      r.ours = med("exact"), r.tolerance = med("tolerance"), r.capped = med("capped"), r.fclDistance = med("fcl_distance");
+      r.oursP90 = p90("exact"), r.fclDistanceP90 = p90("fcl_distance");
+      r.nodePairsExact = adsd::bench::median(pairsExact);
+      r.nodePairsTolerance = adsd::bench::median(pairsTolerance);
+      const double cap = kCapFraction * length;
+      for (std::size_t i = 0; i < n; ++i) {
+        r.worstError = std::max(r.worstError, std::abs(exact[i] - fclD[i]) / length);
+        if (exact[i] > 0.0) r.worstToleranceError = std::max(r.worstToleranceError, (tolerance[i] - exact[i]) / exact[i]);
+        const bool capOk = exact[i] >= cap ? capped[i] >= cap * (1.0 - 1e-12) : std::abs(capped[i] - exact[i]) <= kAgreement * length;
+        const bool tolOk = tolerance[i] >= exact[i] - kAgreement * length &&
+                           tolerance[i] <= exact[i] * (1.0 + kRelativeTolerance) + kAgreement * length;
+        if (std::abs(exact[i] - fclD[i]) > kAgreement * length || !capOk || !tolOk) {
+          std::fprintf(stderr, "bench_bands: %s %s query %zu: exact %.17g, FCL %.17g, tolerance %.17g, capped %.17g\n",
+                       sceneName.c_str(), band.name.c_str(), i, exact[i], fclD[i], tolerance[i], capped[i]);
+          status = 3;
+        }
+      }
+    }
+    if (csv) {
+      for (const auto& m : methods) {
+        for (std::size_t k = 0; k < m.micros.size(); ++k) {
+          const std::size_t i = k % n;
+          double value = 0.0;
+          if (m.name == "exact") value = exact[i];
+          else if (m.name == "tolerance") value = tolerance[i];
+          else if (m.name == "capped") value = capped[i];
+          else if (m.name == "fcl_distance") value = fclD[i];
+          else if (m.name == "validity") value = freeOurs[i];
+          else value = freeFcl[i];
+          *csv << sceneName << ',' << band.name << ',' << m.name << ',' << i << ',';
+          char buffer[96];
+          std::snprintf(buffer, sizeof buffer, "%.17g,%.17g,%.4f\n", length, value, m.micros[k]);
+          *csv << buffer;
+        }
+      }
+    }
+    if (distances) {
+      std::printf("%-24s %-9s %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f | %6.3f %6.3f %6.3f %6.3f | %7.0f %7.0f %7.0f %8.1e\n",
+                  sceneName.c_str(), band.name.c_str(), r.ours, r.tolerance, r.capped, r.fclDistance, r.validity,
+                  r.fclCollide, r.ours / r.fclDistance, r.tolerance / r.ours, r.validity / r.fclCollide,
+                  r.capped / r.fclDistance, r.nodePairsExact, r.nodePairsTolerance, r.nodePairsValidity, r.worstError);
+    } else {
+      std::printf("%-24s %-9s %9s %9s %9s %9s %9.1f %9.1f | %6s %6s %6.3f %6s | %7s %7s %7.0f\n", sceneName.c_str(),
+                  band.name.c_str(), "", "", "", "", r.validity, r.fclCollide, "", "", r.validity / r.fclCollide, "", "",
+                  "", r.nodePairsValidity);
+    }
+    std::fflush(stdout);
+    results.push_back(r);
+  }
+  return status;
+}
+
+/// The per-band summary: for each ratio, the median over the scenes and the worst scene, as
+/// text on stdout and, when \p markdown is given, as a Markdown table there.
+void summary(const std::vector<BandResult>& results, const std::string& markdown) {
+  struct Row {
+    std::string band, scenes, exact, tolerance, validity, capped;
+  };
+  std::vector<Row> rows;
+  for (const char* band : {"near", "mid", "far", "uniform", "collision"}) {
+    std::vector<double> e, t, v, c;
+    std::string worstE, worstT, worstV, worstC;
+    auto track = [](std::vector<double>& x, std::string& worst, double value, const std::string& scene) {
+      if (x.empty() || value > *std::max_element(x.begin(), x.end())) worst = scene;
+      x.push_back(value);
+    };
+    for (const BandResult& r : results) {
+      if (r.band != band) continue;
+      track(v, worstV, r.validity / r.fclCollide, r.scene);
+      if (!r.distances) continue;
+      track(e, worstE, r.ours / r.fclDistance, r.scene);
+      track(t, worstT, r.tolerance / r.ours, r.scene);
+      track(c, worstC, r.capped / r.fclDistance, r.scene);
+    }
+    if (v.empty()) continue;
+    auto cell = [](const std::vector<double>& x, const std::string& worst) {
+      if (x.empty()) return std::string("-");
+      char buffer[128];
+      std::snprintf(buffer, sizeof buffer, "%.3f (worst %.3f, %s)", adsd::bench::median(x),
+                    *std::max_element(x.begin(), x.end()), worst.c_str());
+      return std::string(buffer);
+    };
+    rows.push_back({band, std::to_string(v.size()), cell(e, worstE), cell(t, worstT), cell(v, worstV), cell(c, worstC)});
+  }
+  std::printf("\nSummary per band over the scenes: median of the ratios of medians (worst scene)\n");
+  std::printf("%-9s %6s  %-40s %-40s %-40s %-40s\n", "band", "scenes", "exact / FCL distance", "1% tolerance / exact",
+              "validity / FCL collide", "capped / FCL distance");
+  for (const Row& r : rows) {
+    std::printf("%-9s %6s  %-40s %-40s %-40s %-40s\n", r.band.c_str(), r.scenes.c_str(), r.exact.c_str(),
+                r.tolerance.c_str(), r.validity.c_str(), r.capped.c_str());
+  }
+  if (markdown.empty()) return;
+  std::ofstream out(markdown);
+  out << "| band | scenes | exact ÷ FCL distance | 1 % tolerance ÷ exact | validity (D = 0) ÷ FCL collide | capped at 5 % L ÷ FCL distance |\n";
+  out << "|---|---:|---|---|---|---|\n";
+  for (const Row& r : rows) {
+    out << "| " << r.band << " | " << r.scenes << " | " << r.exact << " | " << r.tolerance << " | " << r.validity << " | "
+        << r.capped << " |\n";
+  }
+  if (!out) throw std::runtime_error("cannot write " + markdown);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  std::printf("bench_bands:");
+  for (int i = 1; i < argc; ++i) std::printf(" %s", argv[i]);
+  std::printf("\n%zu queries per band, %d rounds, seed %llu; median microseconds per query (both libraries keep "
+              "their trees); ratios of medians; node pairs: median of our exact, tolerance and validity queries; error: max "
+              "|ours - FCL| / L\n",
+              o.poses, o.rounds, static_cast<unsigned long long>(o.seed));
+  std::printf("%-24s %-9s %9s %9s %9s %9s %9s %9s | %6s %6s %6s %6s | %7s %7s %7s %8s\n", "scene", "band", "exact",
+              "tol 1%", "capped", "fcl dist", "valid", "fcl coll", "ex/fcl", "tol/ex", "va/fcl", "cap/fc", "pairs",
+              "pairs t", "pairs v", "error");
+  std::ofstream csvFile;
+  if (!o.csv.empty()) {
+    csvFile.open(o.csv);
+    if (!csvFile) {
+      std::fprintf(stderr, "bench_bands: cannot write %s\n", o.csv.c_str());
+      return 2;
+    }
+    csvFile << "scene,band,method,query,reference_length,answer,microseconds\n";
+  }
+  std::vector<BandResult> results;
+  int status = 0;
+  try {
+    // Scenes are built with one placed pose (their own bands are drawn here).
+    adsd::bench::SceneSize size;
+    size.rigidPoses = 1;
+    for (const std::string& name : o.scenes) {
+      const adsd::bench::DistanceScene scene = adsd::bench::makeDistanceScene(name, size, adsd::bench::fclPlacement);
+      if (scene.deforming) throw adsd::InputError("bench_bands: " + name + " is a deforming scene (bench_scenes has it)");
+      const bool planar = scene.planning && scene.description.find("SE(2)") != std::string::npos;
+      status = std::max(status, runScene(name, scene.a, scene.b, scene.planning, planar, scene.referenceLength, o,
+                                         results, csvFile.is_open() ? &csvFile : nullptr));
+    }
+    for (const auto& [fileA, fileB] : o.pairs) {
+      const Mesh a = adsd::io::loadMesh(fileA), b = adsd::io::loadMesh(fileB);
+      auto stem = [](const std::string& path) {
+        const auto slash = path.find_last_of('/');
+        const std::string file = slash == std::string::npos ? path : path.substr(slash + 1);
+        return file.substr(0, file.find('.'));
+      };
+      status = std::max(status, runScene(stem(fileA) + "_" + stem(fileB), a, b, false, false,
+                                         adsd::bench::referenceLength(a, b), o, results,
+                                         csvFile.is_open() ? &csvFile : nullptr));
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_bands: %s\n", e.what());
+    return 2;
+  }
+  try {
+    summary(results, o.summaryMarkdown);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_bands: %s\n", e.what());
+    return 2;
+  }
+  return status;
+}
