@@ -35,6 +35,7 @@
 /// ours on every frame; the oracle's frames are among FCL's.
 
 #include <algorithm>
+#include <deque>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -298,7 +299,11 @@ SceneOutcome runScene(const DistanceScene& scene, std::size_t oracleBudget, std:
     treeB->buildHierarchy();
   }
   std::vector<MethodRun> runs;
-  adsd::DistanceScratch scratch;
+  // One scratch per method: a scratch remembers the last answer's witness triangles as a hint for
+  // the next query, and the methods run back to back on each pose, so a shared scratch would hand
+  // each method the answer the one before it found for the same pose. Per method, the hint comes
+  // from the previous pose, as a planner's would from its previous query.
+  std::deque<adsd::DistanceScratch> scratches;
   auto addOurs = [&](std::string name, Kind kind, double parameter, adsd::DistanceOptions options,
                      bool withTree = false) {
     MethodRun m;
@@ -316,9 +321,10 @@ SceneOutcome runScene(const DistanceScene& scene, std::size_t oracleBudget, std:
     runs[k].timing.name = runs[k].name;
     const adsd::Mesh& a = withTree ? *treeA : meshA;
     const adsd::Mesh& b = withTree ? *treeB : meshB;
-    runs[k].timing.run = [&, k, options](std::size_t i) {
+    adsd::DistanceScratch* scratch = &scratches.emplace_back();
+    runs[k].timing.run = [&, k, options, scratch](std::size_t i) {
       MethodRun& me = runs[k];
-      const adsd::DistanceResult r = adsd::distance(a, poses[i].a, b, poses[i].b, options, scratch);
+      const adsd::DistanceResult r = adsd::distance(a, poses[i].a, b, poses[i].b, options, *scratch);
       switch (me.kind) {
         case Kind::threshold: me.value[i] = r.status == adsd::DistanceStatus::aboveThreshold ? 1.0 : 0.0; break;
         case Kind::cap: me.value[i] = r.status == adsd::DistanceStatus::beyondCap ? me.parameter : r.distance; break;
