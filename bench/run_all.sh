@@ -14,13 +14,17 @@
 # (--readme FILE and --no-readme are the old names of --page and --no-paste.)
 #
 # BUILD_DIR (default: build) must hold a Release build of the targets
-#   bench_distance_vs_fcl bench_scenes bench_scene_counters bench_checker_calls adsd adsd_problems
+#   bench_distance_vs_fcl bench_scenes bench_bands bench_scene_counters bench_checker_calls adsd adsd_problems
 # and the real meshes must be cached (problems/data/fetch_meshes.sh). Writes bench/results/:
 #   distance_vs_fcl.txt   bench_distance_vs_fcl (cow x cow from scratch against FCL)
 #   scenes.csv, scenes.md, table1.md, time_vs_error.png, time_vs_triangles.png
 #                         bench_scenes: every scene, every method, against the oracle
 #   scenes.txt            what bench_scenes printed (per scene: checksums beside the oracle's)
 #   ratios.md             bench/ratio_summary.py: the distance ratios against FCL from scenes.csv
+#   bands.txt, bands.csv, bands_summary.md, bands.png
+#                         bench_bands: every query mode against FCL band by band (near, mid, far,
+#                         uniform planning states, in collision) on every rigid scene and two more
+#                         real pairs; bench/plot_bands.py: time against error per band
 #   profile_modes.md      bench/profile_modes.py: where exact and 1 % tolerance queries spend their
 #                         time, per stage of the traversal (perf; skipped when perf cannot sample)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
@@ -55,12 +59,19 @@ while [[ $# -gt 0 ]]; do
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
     --page|--readme) [[ $# -ge 2 ]] || { echo "run_all.sh: $1 needs a file" >&2; exit 2; }; page=$2; shift ;;
-    -h|--help) sed -n '2,46p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,49p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
   shift
 done
+
+# bench_bands' scenes: every rigid scene of bench_scenes (mesh pairs and planning problems) and two
+# real pairs that no other benchmark uses, so that the bands are not read off tuned scenes only.
+bands_options() {
+  local m=${ADSD_DATA_DIR:-$HOME/.cache/adsd/meshes}
+  echo "--scenes all --pairs $m/elephant.off:$m/knot.off,$m/man.off:$m/bunny.off --poses 30 --rounds 3"
+}
 
 # The planning problems bench_checker_calls times (those the planning rows run).
 checker_call_problems() {
@@ -117,6 +128,15 @@ paste_results() {
     planning_tables planning_control planning_control_hard
     /usr/bin/python3 bench/paste_results.py "$page" planning_control "${tables[@]}"
   fi
+  if [[ -f bench/results/bands_summary.md ]]; then
+    /usr/bin/python3 bench/paste_results.py "$page" bands \
+      "$build/bench/bench_bands $(bands_options | sed "s#$HOME#~#g") --summary-md bench/results/bands_summary.md" \
+      bench/results/bands_summary.md \
+      "$build/bench/bench_bands (the same run, every scene and band)" bench/results/bands.txt
+    /usr/bin/python3 bench/paste_results.py README.md headline_bands \
+      "$build/bench/bench_bands $(bands_options | sed "s#$HOME#~#g") --summary-md bench/results/bands_summary.md" \
+      bench/results/bands_summary.md
+  fi
   # The README's headline: a few scenes' main ratios, cut from ratios.md (first table only).
   local headline
   headline=$(mktemp --suffix=.md)
@@ -134,8 +154,8 @@ if [[ $paste_only -eq 1 ]]; then
   paste_results
   exit 0
 fi
-for program in bench/bench_distance_vs_fcl bench/bench_scenes bench/bench_scene_counters bench/bench_checker_calls \
-  planner/app/adsd; do
+for program in bench/bench_distance_vs_fcl bench/bench_scenes bench/bench_bands bench/bench_scene_counters \
+  bench/bench_checker_calls planner/app/adsd; do
   [[ -x "$build/$program" ]] || { echo "run_all.sh: no $build/$program (build the targets first, see --help)" >&2; exit 2; }
 done
 [[ -d "$build/problem_files" ]] || { echo "run_all.sh: no $build/problem_files (build adsd_problems)" >&2; exit 2; }
@@ -174,6 +194,9 @@ step scenes sh -c "'$build/bench/bench_scenes' --out '$staging' > '$staging/scen
 # The tables quote the command that made them; they are read from bench/results.
 sed -i "s#$staging/#bench/results/#g; s#--out $staging#--out bench/results#" "$staging/scenes.md" "$staging/table1.md" "$staging/scenes.txt"
 step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv' > '$staging/ratios.md'"
+step bands sh -c "'$build/bench/bench_bands' $(bands_options) --csv '$staging/bands.csv' \
+  --summary-md '$staging/bands_summary.md' > '$staging/bands.txt'"
+step bands_plot /usr/bin/python3 bench/plot_bands.py "$staging/bands.csv" "$staging/bands.png"
 step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
 step checker_calls sh -c "'$build/bench/bench_checker_calls' $(checker_call_problems "$build") > '$staging/checker_calls.txt'"
 for from in rrtconnect prm; do
