@@ -25,13 +25,20 @@ const Command kCommands[] = {
      adsd::app::benchmarkCommand},
 };
 
+// The same layout as each command's help (adsd::cli::CommandLine): usage, what it does, then the list.
 void printUsage(std::ostream& out) {
-  out << "usage: adsd <command> [arguments]   (adsd <command> --help describes one)\n\ncommands:\n";
+  out << "usage: adsd <command> [arguments]\n\n"
+         "Exact distance between triangle meshes, and motion planning with it as OMPL's validity checker.\n\n"
+         "commands:\n";
   for (const Command& c : kCommands) {
     std::string name = c.name;
     name.resize(12, ' ');
     out << "  " << name << c.summary << '\n';
   }
+  out << "\noptions:\n"
+         "  -h [ --help ]  print this help and exit\n"
+         "  --version      print the version and exit\n\n"
+         "adsd <command> --help describes one command.\n";
 }
 
 }  // namespace
