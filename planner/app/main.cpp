@@ -45,8 +45,9 @@ void printUsage(std::ostream& out) {
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
+  // A bad command line is one line and exit status 2, as in every command (adsd::cli).
   if (args.empty()) {
-    printUsage(std::cerr);
+    std::cerr << "adsd: error: expected a command (adsd --help lists them)\n";
     return 2;
   }
   const std::string& name = args.front();
@@ -61,6 +62,6 @@ int main(int argc, char** argv) {
   for (const Command& c : kCommands) {
     if (name == c.name) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
   }
-  std::cerr << "adsd: unknown command '" << name << "' (adsd --help lists the commands)\n";
+  std::cerr << "adsd: error: unknown command '" << name << "' (adsd --help lists the commands)\n";
   return 2;
 }

@@ -3,7 +3,8 @@
 
   help_and_docs.py ADSD REPOSITORY_ROOT
 
-Checks that `adsd --help` names every command; that `adsd COMMAND --help` (and -h, and --help
+Checks that `adsd --help` names every command, and that `adsd` alone or with an unknown command
+is one line on stderr and exit status 2; that `adsd COMMAND --help` (and -h, and --help
 after other arguments, bad or not) exits 0 with nothing on stderr and prints "usage: adsd COMMAND",
 a description, "options:" and "-h [ --help ]"; and that the options listed there are exactly the
 options docs/commands.md's section "## `adsd COMMAND`" names.
@@ -49,6 +50,10 @@ def main():
     check(p.stdout.startswith("usage: adsd <command>"), "adsd --help does not start with its usage:\n" + p.stdout)
     for command in COMMANDS:
         check(re.search(r"^  %s\s" % command, p.stdout, re.M) is not None, "adsd --help does not list " + command)
+    for args in ([], ["no-such-command"]):
+        p = run(adsd, args)
+        check(p.returncode == 2 and p.stdout == "" and len(p.stderr.splitlines()) == 1,
+              "adsd %s: exit %d, expected 2 and one line on stderr, got %r" % (" ".join(args), p.returncode, p.stderr))
     for command in COMMANDS:
         for args in (["--help"], ["-h"], ["--bogus", "--help"], ["x", "y", "--time", "abc", "-h"]):
             p = run(adsd, [command] + args)
