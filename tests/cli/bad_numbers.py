@@ -2,7 +2,7 @@
 """Every program's answer to bad numbers on its command line, under a German locale (decimal comma).
 
   bad_numbers.py NAME=PATH...      (NAME: adsd, adsd_stress, bench_scenes, bench_distance_vs_fcl,
-                                    bench_scene_counters, bench_checker_calls)
+                                    bench_scene_counters, bench_checker_calls, bench_mesh_info)
 
 Checks, for each program given: a malformed or out-of-range number ("abc", "-1", "1e3x", "0,5", 0
 where a count must be positive) stops it with exit status 2, exactly one line on stderr naming the
@@ -60,6 +60,10 @@ BAD = {
         (["--repeat", "0"], "--repeat"),
         (["--repeat", "abc"], "--repeat"),
         (["--bogus"], "--bogus"),
+    ],
+    "bench_mesh_info": [
+        ([], "mesh files"),
+        (["--bogus", "x.obj"], "--bogus"),
     ],
     "bench_checker_calls": [
         (["--states", "-1", "x.cfg"], "--states"),
