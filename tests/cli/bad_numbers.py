@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Every program's answer to bad numbers on its command line, under a German locale (decimal comma).
 
-  bad_numbers.py NAME=PATH...      (NAME: adsd, adsd_stress, bench_scenes, bench_distance_vs_fcl,
+  bad_numbers.py NAME=PATH...      (NAME: adsd, adsd_stress, adsd_soak, bench_scenes, bench_distance_vs_fcl,
                                     bench_scene_counters, bench_checker_calls, bench_mesh_info)
 
 Checks, for each program given: a malformed or out-of-range number ("abc", "-1", "1e3x", "0,5", 0
@@ -44,6 +44,12 @@ BAD = {
         (["--progress", "0"], "--progress"),
         (["--threads", "0,5"], "--threads"),
         (["--bogus"], "--bogus"),
+    ],
+    "adsd_soak": [
+        ([], "PROBLEM.cfg MINUTES"),
+        (["x.cfg", "abc"], "MINUTES"),
+        (["x.cfg", "1", "0,5"], "SECONDS_PER_RUN"),
+        (["x.cfg", "-1"], "'-1'"),  # a negative positional reads as an option: refused all the same
     ],
     "bench_scenes": [
         (["--oracle", "-1"], "--oracle"),
