@@ -20,8 +20,8 @@
 // 0: a state touches an obstacle exactly with probability 0). Exit status 0; 2 on bad usage or a
 // problem that cannot be set up; 3 when the checkers disagree on some state.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <limits>
 #include <memory>
@@ -34,6 +34,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "adsd/cli/command_line.h"
 #include "adsd/planner/planner_registry.h"
 #include "adsd/planner/planning_problem.h"
 #include "timing.h"
@@ -64,14 +65,6 @@ struct Options {
   std::string from = "uniform";  // or a planner's name
   std::vector<std::string> problems;
 };
-
-[[noreturn]] void usage(const std::string& why) {
-  std::fprintf(stderr,
-               "bench_checker_calls: %s\nusage: bench_checker_calls [--states N] [--seed S] "
-               "[--from uniform|rrtconnect|prm] PROBLEM.cfg...\n",
-               why.c_str());
-  std::exit(2);
-}
 
 /// \brief Passes every check to another checker and keeps a copy of each state, up to a limit.
 /// Planners may check from several threads (PRM), hence the lock; its cost is the planner's, and
@@ -132,38 +125,36 @@ std::vector<ompl::base::State*> plannerStates(adsd::planner::PlanningProblem& pr
   return recorder->take();
 }
 
-Options parse(int argc, char** argv) {
+adsd::cli::CommandLine commandLine() {
+  adsd::cli::CommandLine line(
+      "bench_checker_calls", "bench_checker_calls [--states N] [--seed S] [--from uniform|rrtconnect|prm] PROBLEM.cfg...",
+      "Times StateValidityChecker::isValid, ours against FCL's checker, on the same states of each problem.",
+      "Exit status 0; 2 on bad usage or a problem that cannot be set up; 3 when the checkers disagree on some state.");
+  line.options()
+      ("states", adsd::cli::value("N"), "states per problem, at least 1000 (default 100000)")
+      ("seed", adsd::cli::value("S"), "OMPL's random seed, 1 to 4294967295 (default 1)")
+      ("from", adsd::cli::value("uniform|PLANNER"),
+       "uniform states (default), or the states a planner (rrtconnect, prm, ...) checks, in its order");
+  line.positional("problem");
+  return line;
+}
+
+Options parse(const adsd::cli::Arguments& given) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--from") {
-      if (i + 1 >= argc) usage("--from needs a value");
-      o.from = argv[++i];
-      const auto& planners = adsd::planner::knownPlannerNames();
-      if (o.from != "uniform" && std::find(planners.begin(), planners.end(), o.from) == planners.end()) {
-        usage("--from: expected uniform or a planner's name (rrtconnect, prm, ...), got '" + o.from + "'");
-      }
-    } else if (arg == "--states" || arg == "--seed") {
-      if (i + 1 >= argc) usage(arg + " needs a value");
-      char* end = nullptr;
-      const unsigned long value = std::strtoul(argv[++i], &end, 10);
-      if (end == argv[i] || *end != '\0' || value == 0) usage(arg + " needs a positive integer, got '" + argv[i] + "'");
-      (arg == "--states" ? o.states : o.seed) = value;
-    } else if (!arg.empty() && arg[0] == '-') {
-      usage("unknown option " + arg);
-    } else {
-      o.problems.push_back(arg);
-    }
+  o.states = given.whole("states", kBlockStates, std::numeric_limits<std::size_t>::max()).value_or(o.states);
+  o.seed = given.whole("seed", 1, std::numeric_limits<std::uint32_t>::max()).value_or(o.seed);
+  o.from = given.text("from").value_or(o.from);
+  const auto& planners = adsd::planner::knownPlannerNames();
+  if (o.from != "uniform" && std::find(planners.begin(), planners.end(), o.from) == planners.end()) {
+    throw adsd::cli::UsageError("--from: expected uniform or a planner's name (rrtconnect, prm, ...), got '" + o.from +
+                                "'");
   }
-  if (o.problems.empty()) usage("no problem file given");
-  if (o.states < kBlockStates) usage("--states must be at least " + std::to_string(kBlockStates));
+  o.problems = given.texts("problem");
+  if (o.problems.empty()) throw adsd::cli::UsageError("no problem file given");
   return o;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const Options options = parse(argc, argv);
+int run(const Options& options) {
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   // Once, before OMPL makes any generator: every sampler's seed then follows from it, so a command
   // (its problems in its order) always draws the same states.
@@ -236,4 +227,11 @@ int main(int argc, char** argv) {
     }
   }
   return disagreement ? 3 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return adsd::cli::runProgram(commandLine(), argc, argv,
+                               [](const adsd::cli::Arguments& given) { return run(parse(given)); });
 }

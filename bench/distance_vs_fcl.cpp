@@ -18,16 +18,17 @@
 /// methods agree to kAgreementTolerance × L, 3 when they do not, 2 on bad input or usage.
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "adsd/cli/command_line.h"
 #include "adsd/distance.h"
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
@@ -54,52 +55,33 @@ struct Options {
   std::uint64_t seed = 20240601;
 };
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-const char* const kUsage =
-    "usage: bench_distance_vs_fcl [--quick] [--poses N] [--rounds R] [--seed S] [MESH_A [MESH_B]]\n"
-    "  defaults: cow.off twice from the mesh cache, 60 poses, 3 rounds (--quick: 12 poses, 1 round)\n";
-
-std::uint64_t parseCount(const std::string& flag, const char* text, std::uint64_t minimum) {
-  char* end = nullptr;
-  errno = 0;
-  const unsigned long long value = std::strtoull(text, &end, 10);
-  if (errno != 0 || end == text || *end != '\0' || text[0] == '-' || value < minimum) {
-    throw UsageError(flag + " needs an integer >= " + std::to_string(minimum) + ", got '" + text + "'");
-  }
-  return value;
+adsd::cli::CommandLine commandLine() {
+  adsd::cli::CommandLine line(
+      "bench_distance_vs_fcl", "bench_distance_vs_fcl [--quick] [--poses N] [--rounds R] [--seed S] [MESH_A [MESH_B]]",
+      "Our exact distance from scratch against FCL building both OBBRSS trees and querying, and against FCL\n"
+      "on prebuilt trees, on one pair of meshes in close proximity.",
+      "Defaults: cow.off twice from the mesh cache, 60 poses, 3 rounds (--quick: 12 poses, 1 round).\n"
+      "Exit status 0 when all methods agree, 3 when they do not, 2 on bad input or usage.");
+  line.options()
+      ("quick", "12 poses, 1 round")
+      ("poses", adsd::cli::value("N"), "poses, from 1 (default 60)")
+      ("rounds", adsd::cli::value("R"), "rounds over the poses, from 1 (default 3)")
+      ("seed", adsd::cli::value("S"), "the poses' random seed (default 20240601)");
+  line.positional("mesh");
+  return line;
 }
 
-Options parseOptions(int argc, char** argv) {
+Options parseOptions(const adsd::cli::Arguments& given) {
   Options options;
-  std::vector<std::string> paths;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> const char* {
-      if (i + 1 >= argc) throw UsageError(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--quick") {
-      options.poses = 12;
-      options.rounds = 1;
-    } else if (arg == "--poses") {
-      options.poses = parseCount(arg, value(), 1);
-    } else if (arg == "--rounds") {
-      options.rounds = static_cast<int>(parseCount(arg, value(), 1));
-    } else if (arg == "--seed") {
-      options.seed = parseCount(arg, value(), 0);
-    } else if (arg == "-h" || arg == "--help") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("unknown option '" + arg + "'");
-    } else {
-      paths.push_back(arg);
-    }
+  if (given.has("quick")) {
+    options.poses = 12;
+    options.rounds = 1;
   }
-  if (paths.size() > 2) throw UsageError("at most two mesh paths");
+  options.poses = given.whole("poses", 1, std::numeric_limits<std::size_t>::max()).value_or(options.poses);
+  options.rounds = static_cast<int>(given.whole("rounds", 1, std::numeric_limits<int>::max()).value_or(options.rounds));
+  options.seed = given.whole("seed").value_or(options.seed);
+  const std::vector<std::string> paths = given.texts("mesh");
+  if (paths.size() > 2) throw adsd::cli::UsageError("at most two mesh paths");
   options.meshA = paths.size() > 0 ? paths[0] : adsd::bench::cachedMesh("cow.off");
   options.meshB = paths.size() > 1 ? paths[1] : options.meshA;
   return options;
@@ -293,10 +275,8 @@ int run(const Options& options) {
 
 int main(int argc, char** argv) {
   try {
-    return run(parseOptions(argc, argv));
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "bench_distance_vs_fcl: %s\n%s", e.what(), kUsage);
-    return 2;
+    return adsd::cli::runProgram(commandLine(), argc, argv,
+                                 [](const adsd::cli::Arguments& given) { return run(parseOptions(given)); });
   } catch (const adsd::InputError& e) {
     std::fprintf(stderr, "bench_distance_vs_fcl: %s\n", e.what());
     return 2;

@@ -218,10 +218,10 @@ else
   cp bench/results/profile_modes*.md "$staging/" 2>/dev/null || true
 fi
 if [[ $planning -eq 1 ]]; then
-  # Solve times spread over a factor of a hundred between seeds, and PRM's runs are not paired
-  # (its two threads), so a row needs many runs: with five or ten the median was one pair's ratio
-  # (the bug trap's RRTConnect row read 0.88 in one run of this script and 1.11 in the next, with
-  # the same core), and with forty the office's PRM interval spanned 0.87-1.33. Two hundred on the
+  # Solve times spread over orders of magnitude between seeds, and PRM's runs are not paired
+  # (its two threads), so a row needs many runs: with a handful, a row's median is one pair's
+  # ratio and moves from one run of this script to the next on the same core, and PRM's interval
+  # stays wide with a few dozen (bench/planning/solve_time_ratios.py prints both). Two hundred on the
   # problems solved in milliseconds (about a minute each); on the bug trap and the twisted passage,
   # whose runs take seconds, twenty, forty with --long. The maze's PRM row gets five: it is
   # censored (neither checker solves it within 5 s) and costs the time limit per run. The cow

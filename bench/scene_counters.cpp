@@ -19,10 +19,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "adsd/cli/command_line.h"
 #include "adsd/distance.h"
 #include "adsd/error.h"
 #include "fcl_models.h"
@@ -61,31 +61,34 @@ constexpr double kThresholdFraction = 0.01;
 /// Where each mode's answers go (volatile: the queries must run).
 volatile double answers = 0.0;
 
-int main(int argc, char** argv) {
+namespace {
+
+adsd::cli::CommandLine commandLine() {
+  adsd::cli::CommandLine line(
+      "bench_scene_counters", "bench_scene_counters [--scenes a,b,...] [--modes exact,known,tol,threshold,contact] [--repeat R]",
+      "Per query mode on prebuilt trees: the median time per query next to FCL's, and the mean work per query\n"
+      "(node pairs, pairs dropped by bounds, exact triangle pairs).",
+      "Exit status 0; 2 on bad usage or a missing mesh.");
+  line.options()
+      ("scenes", adsd::cli::value("a,b,..."), "bench_scenes' scenes (default: the seven planning problems)")
+      ("modes", adsd::cli::value("m,..."), "exact, known, tol, threshold, contact (default: all)")
+      ("repeat", adsd::cli::value("R"), "repetitions of each scene's poses, from 1 (default 20)");
+  return line;
+}
+
+int run(const adsd::cli::Arguments& given) {
   std::vector<std::string> scenes = {"problem_office",   "problem_maze",           "problem_thin_wall",
                                      "problem_bug_trap", "problem_twisted_passage", "problem_alpha_puzzle",
                                      "problem_cow_doorway"};
   std::vector<std::string> modes = {"exact", "known", "tol", "threshold", "contact"};
-  int repeat = 20;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--scenes" && hasValue) {
-      scenes = splitList(argv[++i]);
-    } else if (arg == "--modes" && hasValue) {
-      modes = splitList(argv[++i]);
-    } else if (arg == "--repeat" && hasValue) {
-      repeat = std::atoi(argv[++i]);
-    } else {
-      std::fprintf(stderr, "usage: %s [--scenes a,b,...] [--modes exact,known,tol,threshold,contact] [--repeat R]\n",
-                   argv[0]);
-      return 2;
+  if (const auto list = given.text("scenes")) scenes = splitList(*list);
+  if (const auto list = given.text("modes")) modes = splitList(*list);
+  for (const std::string& mode : modes) {
+    if (mode != "exact" && mode != "known" && mode != "tol" && mode != "threshold" && mode != "contact") {
+      throw adsd::cli::UsageError("--modes: unknown mode '" + mode + "' (exact, known, tol, threshold, contact)");
     }
   }
-  if (repeat < 1) {
-    std::fprintf(stderr, "bench_scene_counters: --repeat must be >= 1\n");
-    return 2;
-  }
+  const int repeat = static_cast<int>(given.whole("repeat", 1, 1000000).value_or(20));
   std::printf("Median microseconds per query over each scene's poses x %d, ours on prebuilt sub-mesh trees and FCL on\n"
               "prebuilt OBBRSS, interleaved pose by pose; work counters are means per query. Modes: exact (FCL: distance),\n"
               "known (exact, capped just above its answer, found first and untimed: the cost of the proof alone),\n"
@@ -164,3 +167,7 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return adsd::cli::runProgram(commandLine(), argc, argv, run); }

@@ -17,6 +17,8 @@ packages=(
   clang libclang-rt-14-dev python3-matplotlib parallel sqlite3 linux-perf
   # A one-node Slurm cluster for the sharded benchmark's test (bench/planning/slurm_local_cluster.sh).
   slurm-wlm munge
+  # Locale sources: tests/cli compiles a German locale (decimal comma) with localedef.
+  locales
 )
 # npm (for the npm meshes): only when there is none, as Node.js from elsewhere ships its own and
 # conflicts with Debian's npm package.

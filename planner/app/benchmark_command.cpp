@@ -52,6 +52,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "adsd/cli/command_line.h"
 #include "adsd/error.h"
 #include "adsd/planner/planner_registry.h"
 #include "adsd/planner/planning_problem.h"
@@ -69,21 +70,20 @@ namespace fs = std::filesystem;
 namespace ob = ompl::base;
 namespace ot = ompl::tools;
 
-const char* kUsage =
-    "usage: adsd benchmark [PROBLEM.cfg] [--checker adsd|fcl|both] [--motion discrete|certified|both]\n"
+const char* const kSynopsis =
+    "adsd benchmark [PROBLEM.cfg] [--checker adsd|fcl|both] [--motion discrete|certified|both]\n"
     "                      [--runs N | --run-range A:B] [--seed S] [--time SECONDS] [--out DIR]\n"
-    "                      [--no-plots | --log-only]\n"
-    "\n"
+    "                      [--no-plots | --log-only]";
+
+const char* const kDescription =
     "Runs OMPL's benchmark on the problem's [benchmark] and [planner] sections for each checker and\n"
     "motion validator (default: both of each), writes DIR/STEM.log, converts it with\n"
-    "ompl_benchmark_statistics into DIR/STEM.db and plots it (bench/planning/plot_benchmark.py).\n"
-    "  --runs N          runs per planner and combination (default: [benchmark] run_count)\n"
-    "  --run-range A:B   this shard's runs: indices A to B-1 (seed A+1 unless --seed)\n"
-    "  --seed S          OMPL's random seed (1 to 4294967295; default: OMPL's own)\n"
-    "  --time SECONDS    time limit per run (default: [benchmark] time_limit)\n"
-    "  --out DIR         output directory (default: [benchmark] output, else the current one)\n"
-    "  --no-plots        database and summary table, no plots\n"
-    "  --log-only        the log only (merge shards' logs later with ompl_benchmark_statistics)\n";
+    "ompl_benchmark_statistics into DIR/STEM.db and plots it (bench/planning/plot_benchmark.py).";
+
+const char* const kDetails =
+    "STEM is the problem's name, plus .runs-A-B for a run range and .seed-S for a seed, so that every\n"
+    "shard writes its own files. Exit status: 0 done; 1 a tool failed or no run was recorded; 2 bad\n"
+    "input or usage (one line naming the file, line and key, or the option).\n";
 
 /// OMPL's RNG takes no seed 0. A shard of runs [A, B) without --seed is seeded with
 /// A + kShardSeedOffset: shards get different seeds, and a shard run again gets the same one.
@@ -115,88 +115,59 @@ struct BenchmarkArguments {
   bool logOnly = false;
 };
 
-/// A whole decimal number in [min, max]; \p what names the option in the message.
-std::uint64_t parseWhole(const std::string& text, const std::string& what, std::uint64_t min, std::uint64_t max) {
-  const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
-  errno = 0;
-  const unsigned long long value = digits ? std::strtoull(text.c_str(), nullptr, 10) : 0;
-  if (!digits || errno == ERANGE || value < min || value > max) {
-    throw InputError(what + ": expected a whole number from " + std::to_string(min) + " to " + std::to_string(max) +
-                     ", got '" + text + "'");
-  }
-  return value;
-}
-
-BenchmarkArguments parseArguments(const std::vector<std::string>& args) {
+/// Returns nullopt after printing the help.
+std::optional<BenchmarkArguments> parseArguments(const std::vector<std::string>& args) {
   constexpr std::uint64_t kMaxRuns = std::numeric_limits<unsigned>::max();  // OMPL counts runs in unsigned int
   constexpr std::uint64_t kMaxSeed = std::numeric_limits<std::uint32_t>::max();
+  cli::CommandLine line("adsd benchmark", kSynopsis, kDescription, kDetails);
+  line.options()
+      ("checker", cli::value("adsd|fcl|both"), "state validity checkers (default both)")
+      ("motion", cli::value("discrete|certified|both"), "motion validators (default both)")
+      ("runs", cli::value("N"), "runs per planner and combination (default: [benchmark] run_count)")
+      ("run-range", cli::value("A:B"), "this shard's runs: indices A to B-1 (seed A+1 unless --seed)")
+      ("seed", cli::value("S"), "OMPL's random seed (1 to 4294967295; default: OMPL's own)")
+      ("time", cli::value("SECONDS"), "time limit per run, > 0 (default: [benchmark] time_limit)")
+      ("out", cli::value("DIR"), "output directory (default: [benchmark] output, else the current one)")
+      ("no-plots", "database and summary table, no plots")
+      ("log-only", "the log only (merge shards' logs later with ompl_benchmark_statistics)");
+  line.positional("problem");
+  const std::optional<cli::Arguments> given = line.parse(args);
+  if (!given) return std::nullopt;
+
   BenchmarkArguments a;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    const auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw InputError(arg + " needs a value");
-      return args[++i];
-    };
-    if (arg == "--checker") {
-      const std::string& v = value();
-      if (v == "adsd") {
-        a.checkers = {CheckerKind::adsd};
-      } else if (v == "fcl") {
-        a.checkers = {CheckerKind::fcl};
-      } else if (v == "both") {
-        a.checkers = {CheckerKind::adsd, CheckerKind::fcl};
-      } else {
-        throw InputError("--checker: expected adsd, fcl or both, got '" + v + "'");
-      }
-    } else if (arg == "--motion") {
-      const std::string& v = value();
-      if (v == "discrete") {
-        a.motions = {MotionKind::discrete};
-      } else if (v == "certified") {
-        a.motions = {MotionKind::certified};
-      } else if (v == "both") {
-        a.motions = {MotionKind::discrete, MotionKind::certified};
-      } else {
-        throw InputError("--motion: expected discrete, certified or both, got '" + v + "'");
-      }
-    } else if (arg == "--runs") {
-      a.runs = static_cast<unsigned>(parseWhole(value(), "--runs", 1, kMaxRuns));
-    } else if (arg == "--run-range") {
-      const std::string& v = value();
-      const auto colon = v.find(':');
-      if (colon == std::string::npos) throw InputError("--run-range: expected A:B (runs A to B-1), got '" + v + "'");
-      const auto first = parseWhole(v.substr(0, colon), "--run-range (A of A:B)", 0, kMaxRuns - 1);
-      const auto end = parseWhole(v.substr(colon + 1), "--run-range (B of A:B)", 1, kMaxRuns);
-      if (end <= first) throw InputError("--run-range: expected A < B (runs A to B-1), got '" + v + "'");
-      a.runRange = std::make_pair(static_cast<unsigned>(first), static_cast<unsigned>(end));
-    } else if (arg == "--seed") {
-      a.seed = parseWhole(value(), "--seed", 1, kMaxSeed);
-    } else if (arg == "--time") {
-      const std::string& v = value();
-      char* end = nullptr;
-      const double s = std::strtod(v.c_str(), &end);
-      if (v.empty() || end != v.c_str() + v.size() || !(s > 0.0) || !(s < 1e7)) {
-        throw InputError("--time: expected seconds > 0, got '" + v + "'");
-      }
-      a.seconds = s;
-    } else if (arg == "--out") {
-      a.outDirectory = value();
-      if (a.outDirectory->empty()) throw InputError("--out: expected a directory, got ''");
-    } else if (arg == "--no-plots") {
-      a.plots = false;
-    } else if (arg == "--log-only") {
-      a.logOnly = true;
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw InputError("unknown option '" + arg + "' (adsd benchmark --help lists them)");
-    } else if (a.problem.empty()) {
-      a.problem = arg;
-    } else {
-      throw InputError("more than one problem file ('" + a.problem + "', '" + arg + "')");
-    }
+  const std::vector<std::string> problems = given->texts("problem");
+  if (problems.size() > 1) {
+    throw cli::UsageError("more than one problem file ('" + problems[0] + "', '" + problems[1] + "')");
   }
-  if (a.runs && a.runRange) throw InputError("--runs and --run-range: give one (a range's size is its run count)");
-  if (a.logOnly && !a.plots) throw InputError("--log-only and --no-plots: give one (--log-only draws nothing)");
-  if (a.problem.empty()) a.problem = defaultProblemFile();
+  if (const auto checker = given->choice("checker", {"adsd", "fcl", "both"})) {
+    if (*checker == "adsd") a.checkers = {CheckerKind::adsd};
+    if (*checker == "fcl") a.checkers = {CheckerKind::fcl};
+  }
+  if (const auto motion = given->choice("motion", {"discrete", "certified", "both"})) {
+    if (*motion == "discrete") a.motions = {MotionKind::discrete};
+    if (*motion == "certified") a.motions = {MotionKind::certified};
+  }
+  if (const auto runs = given->whole("runs", 1, kMaxRuns)) a.runs = static_cast<unsigned>(*runs);
+  if (const auto range = given->text("run-range")) {
+    const auto colon = range->find(':');
+    if (colon == std::string::npos) {
+      throw cli::UsageError("--run-range: expected A:B (runs A to B-1), got '" + *range + "'");
+    }
+    const auto first = cli::parseWhole(range->substr(0, colon), "--run-range (A of A:B)", 0, kMaxRuns - 1);
+    const auto end = cli::parseWhole(range->substr(colon + 1), "--run-range (B of A:B)", 1, kMaxRuns);
+    if (end <= first) throw cli::UsageError("--run-range: expected A < B (runs A to B-1), got '" + *range + "'");
+    a.runRange = std::make_pair(static_cast<unsigned>(first), static_cast<unsigned>(end));
+  }
+  a.seed = given->whole("seed", 1, kMaxSeed);
+  a.seconds = given->real("time", cli::RealInterval::above(0.0).below(1e7));
+  a.outDirectory = given->text("out");
+  if (a.outDirectory && a.outDirectory->empty()) throw cli::UsageError("--out: expected a directory, got ''");
+  a.plots = !given->has("no-plots");
+  a.logOnly = given->has("log-only");
+  if (a.runs && a.runRange) throw cli::UsageError("--runs and --run-range: give one (a range's size is its run count)");
+  if (a.logOnly && !a.plots) throw cli::UsageError("--log-only and --no-plots: give one (--log-only draws nothing)");
+  // Last: finding the shipped problems may fail, and the options' errors come first.
+  a.problem = problems.empty() ? defaultProblemFile() : problems.front();
   return a;
 }
 
@@ -273,7 +244,7 @@ struct RunQueries {
   /// The wrapped planner's solve alone, from its call to its return (seconds). OMPL's "time" also
   /// holds the termination condition's thread, which Planner::solve(fn, period) starts first and
   /// joins last; that thread sleeps in steps of 1 ms, so the join waits up to 1 ms whatever was
-  /// planned, a large share of a solve that takes 1-2 ms.
+  /// planned, a large share of a short solve.
   double plannerSeconds = 0.0;
   QueryCounts queries;
   std::uint64_t motionChecks = 0;
@@ -355,7 +326,7 @@ void addRunProperties(const Combination& c, unsigned runIndex, ot::Benchmark::Ru
   // a planner that plans on several threads can exceed 1.
   const auto time = run.find("time REAL");
   if (time != run.end()) {
-    const double planningSeconds = std::strtod(time->second.c_str(), nullptr);
+    const double planningSeconds = cli::toReal(time->second).value_or(0.0);
     if (planningSeconds > 0.0 && std::isfinite(planningSeconds)) {
       run["query time fraction REAL"] = real((q.validitySeconds + q.clearanceSeconds) / planningSeconds);
     }
@@ -521,7 +492,9 @@ ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, const ob::SpaceI
 }
 
 int benchmark(const std::vector<std::string>& args) {
-  const BenchmarkArguments a = parseArguments(args);
+  const std::optional<BenchmarkArguments> parsed = parseArguments(args);
+  if (!parsed) return 0;  // the help
+  const BenchmarkArguments& a = *parsed;
   const ProblemFile file = readProblemFile(a.problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd benchmark: warning: " << w << '\n';
   if (file.benchmark.savePaths && *file.benchmark.savePaths != "none") {
@@ -704,12 +677,10 @@ int benchmark(const std::vector<std::string>& args) {
 /// \brief Entry point of `adsd benchmark`; \p args are the arguments after "benchmark".
 int benchmarkCommand(const std::vector<std::string>& args) {
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-    std::cout << kUsage;
-    return 0;
-  }
   try {
     return benchmark(args);
+  } catch (const cli::UsageError& e) {
+    return cli::reportUsageError("adsd benchmark", e);
   } catch (const InputError& e) {
     std::cerr << "adsd benchmark: error: " << e.what() << '\n';
     return 2;

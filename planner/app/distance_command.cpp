@@ -10,7 +10,6 @@
 #include <array>
 #include <charconv>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,8 +19,7 @@
 #include <string>
 #include <vector>
 
-#include <boost/program_options.hpp>
-
+#include "adsd/cli/command_line.h"
 #include "adsd/distance.h"
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
@@ -32,17 +30,15 @@ namespace adsd::app {
 
 namespace {
 
-namespace po = boost::program_options;
+constexpr const char* kSynopsis =
+    "adsd distance MESH_A MESH_B [--poses FILE|-] [--csv] [--abs-tol X] [--rel-tol X]\n"
+    "                     [--threshold D] [--cap D]";
 
-constexpr const char* kUsage =
-    "usage: adsd distance MESH_A MESH_B [--poses FILE|-] [--csv] [--abs-tol X] [--rel-tol X]\n"
-    "                     [--threshold D] [--cap D]\n"
-    "\n"
+constexpr const char* kDescription =
     "Minimum distance between two triangle meshes (any file assimp reads: OBJ, STL, PLY, OFF,\n"
-    "COLLADA, ...; scene node transforms are applied and only triangles are kept).\n";
+    "COLLADA, ...; scene node transforms are applied and only triangles are kept).";
 
 constexpr const char* kDetails =
-    "\n"
     "Without --poses both meshes are at identity and a readable summary is printed. With --poses,\n"
     "each line of FILE (- for stdin) is one query: 14 numbers, tx ty tz qw qx qy qz for mesh A and\n"
     "then for mesh B (each pose maps mesh coordinates to the world; quaternions of unit norm);\n"
@@ -73,85 +69,54 @@ std::string number(double value) {
   return std::string(buffer.data(), result.ptr);
 }
 
-double parseOption(const po::variables_map& vm, const char* name, bool allowZero) {
-  const std::string text = vm[name].as<std::string>();
-  double value = 0.0;
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(begin, end, value);
-  const bool inRange = allowZero ? value >= 0.0 : value > 0.0;
-  if (ec != std::errc() || ptr != end || !std::isfinite(value) || !inRange) {
-    throw InputError(std::string("--") + name + ": expected a finite number " + (allowZero ? ">= 0" : "> 0") +
-                     ", got '" + text + "'");
-  }
-  return value;
-}
-
 /// The query mode from the flags; conflicting modes are an error rather than a silent choice.
-DistanceOptions queryOptions(const po::variables_map& vm) {
-  const bool tolerance = vm.count("abs-tol") || vm.count("rel-tol");
-  const bool threshold = vm.count("threshold") > 0;
-  const bool cap = vm.count("cap") > 0;
+DistanceOptions queryOptions(const cli::Arguments& given) {
+  const bool tolerance = given.has("abs-tol") || given.has("rel-tol");
+  const bool threshold = given.has("threshold");
+  const bool cap = given.has("cap");
   if (int(tolerance) + int(threshold) + int(cap) > 1) {
-    std::vector<std::string> given;
+    std::vector<std::string> named;
     for (const char* flag : {"abs-tol", "rel-tol", "threshold", "cap"}) {
-      if (vm.count(flag)) given.push_back(std::string("--") + flag);
+      if (given.has(flag)) named.push_back(std::string("--") + flag);
     }
-    std::string list = given.front();
-    for (std::size_t i = 1; i < given.size(); ++i) list += (i + 1 == given.size() ? " and " : ", ") + given[i];
-    throw InputError(list + " select different query modes (tolerance, threshold, cap); give at most one");
+    std::string list = named.front();
+    for (std::size_t i = 1; i < named.size(); ++i) list += (i + 1 == named.size() ? " and " : ", ") + named[i];
+    throw cli::UsageError(list + " select different query modes (tolerance, threshold, cap); give at most one");
   }
+  const cli::RealInterval nonNegative = cli::RealInterval::atLeast(0.0);
   if (tolerance) {
-    const double absTol = vm.count("abs-tol") ? parseOption(vm, "abs-tol", true) : 0.0;
-    const double relTol = vm.count("rel-tol") ? parseOption(vm, "rel-tol", true) : 0.0;
+    const double absTol = given.real("abs-tol", nonNegative).value_or(0.0);
+    const double relTol = given.real("rel-tol", nonNegative).value_or(0.0);
     return DistanceOptions::withTolerance(absTol, relTol);
   }
-  if (threshold) return DistanceOptions::aboveThreshold(parseOption(vm, "threshold", true));
-  if (cap) return DistanceOptions::cappedAt(parseOption(vm, "cap", false));
+  if (threshold) return DistanceOptions::aboveThreshold(*given.real("threshold", nonNegative));
+  if (cap) return DistanceOptions::cappedAt(*given.real("cap", cli::RealInterval::above(0.0)));
   return DistanceOptions::exactDistance();
 }
 
 /// Returns nullopt after printing the help.
 std::optional<DistanceArguments> parseArguments(const std::vector<std::string>& args) {
-  po::options_description visible("options");
-  visible.add_options()
-      ("poses", po::value<std::string>()->value_name("FILE"), "one query per line of FILE (- reads stdin)")
+  cli::CommandLine line("adsd distance", kSynopsis, kDescription, kDetails);
+  line.options()
+      ("poses", cli::value("FILE"), "one query per line of FILE (- reads stdin)")
       ("csv", "CSV: a header, then one row per query")
-      ("abs-tol", po::value<std::string>()->value_name("X"), "tolerance mode: absolute slack X >= 0")
-      ("rel-tol", po::value<std::string>()->value_name("X"), "tolerance mode: slack X >= 0 relative to the upper bound")
-      ("threshold", po::value<std::string>()->value_name("D"), "threshold mode: only decide whether distance > D")
-      ("cap", po::value<std::string>()->value_name("D"), "cap mode: distances beyond D reported as >= D")
-      ("help,h", "this help");
-  po::options_description hidden;
-  hidden.add_options()("mesh", po::value<std::vector<std::string>>());
-  po::options_description all;
-  all.add(visible).add(hidden);
-  po::positional_options_description positional;
-  positional.add("mesh", -1);
-
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(args).options(all).positional(positional).run(), vm);
-    po::notify(vm);
-  } catch (const po::error& e) {
-    throw InputError(std::string(e.what()) + " (adsd distance --help)");
-  }
-  if (vm.count("help")) {
-    std::cout << kUsage << '\n' << visible << kDetails;
-    return std::nullopt;
-  }
-  const std::vector<std::string> meshes =
-      vm.count("mesh") ? vm["mesh"].as<std::vector<std::string>>() : std::vector<std::string>();
+      ("abs-tol", cli::value("X"), "tolerance mode: absolute slack X >= 0")
+      ("rel-tol", cli::value("X"), "tolerance mode: slack X >= 0 relative to the upper bound")
+      ("threshold", cli::value("D"), "threshold mode: only decide whether distance > D")
+      ("cap", cli::value("D"), "cap mode: distances beyond D reported as >= D");
+  line.positional("mesh");
+  const std::optional<cli::Arguments> given = line.parse(args);
+  if (!given) return std::nullopt;
+  const std::vector<std::string> meshes = given->texts("mesh");
   if (meshes.size() != 2) {
-    throw InputError("expected two mesh files (MESH_A MESH_B), got " + std::to_string(meshes.size()) +
-                     " (adsd distance --help)");
+    throw cli::UsageError("expected two mesh files (MESH_A MESH_B), got " + std::to_string(meshes.size()));
   }
   DistanceArguments a;
   a.meshA = meshes[0];
   a.meshB = meshes[1];
-  if (vm.count("poses")) a.poses = vm["poses"].as<std::string>();
-  a.csv = vm.count("csv") > 0;
-  a.options = queryOptions(vm);
+  a.poses = given->text("poses");
+  a.csv = given->has("csv");
+  a.options = queryOptions(*given);
   return a;
 }
 
@@ -313,6 +278,8 @@ int runDistance(const std::vector<std::string>& args) {
 int distanceCommand(const std::vector<std::string>& args) {
   try {
     return runDistance(args);
+  } catch (const cli::UsageError& e) {
+    return cli::reportUsageError("adsd distance", e);
   } catch (const InputError& e) {
     std::cerr << "adsd distance: error: " << e.what() << '\n';
     return 2;

@@ -25,21 +25,29 @@ const Command kCommands[] = {
      adsd::app::benchmarkCommand},
 };
 
+// The same layout as each command's help (adsd::cli::CommandLine): usage, what it does, then the list.
 void printUsage(std::ostream& out) {
-  out << "usage: adsd <command> [arguments]   (adsd <command> --help describes one)\n\ncommands:\n";
+  out << "usage: adsd <command> [arguments]\n\n"
+         "Exact distance between triangle meshes, and motion planning with it as OMPL's validity checker.\n\n"
+         "commands:\n";
   for (const Command& c : kCommands) {
     std::string name = c.name;
     name.resize(12, ' ');
     out << "  " << name << c.summary << '\n';
   }
+  out << "\noptions:\n"
+         "  -h [ --help ]  print this help and exit\n"
+         "  --version      print the version and exit\n\n"
+         "adsd <command> --help describes one command.\n";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
+  // A bad command line is one line and exit status 2, as in every command (adsd::cli).
   if (args.empty()) {
-    printUsage(std::cerr);
+    std::cerr << "adsd: error: expected a command (adsd --help lists them)\n";
     return 2;
   }
   const std::string& name = args.front();
@@ -54,6 +62,6 @@ int main(int argc, char** argv) {
   for (const Command& c : kCommands) {
     if (name == c.name) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
   }
-  std::cerr << "adsd: unknown command '" << name << "' (adsd --help lists the commands)\n";
+  std::cerr << "adsd: error: unknown command '" << name << "' (adsd --help lists the commands)\n";
   return 2;
 }

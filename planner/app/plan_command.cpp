@@ -5,11 +5,9 @@
 // Solves a problem file (the default problem without one), simplifies the path, prints a summary
 // and writes the path in OMPL.app's .path format. Exit status: 0 solved, 1 not solved within the
 // time, 2 bad input (one line naming the file, line and key).
-#include <cerrno>
 #include <cstdint>
-#include <exception>
 #include <cstdio>
-#include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -19,6 +17,7 @@
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
+#include "adsd/cli/command_line.h"
 #include "adsd/error.h"
 #include "adsd/planner/path_report.h"
 #include "adsd/planner/planner_registry.h"
@@ -45,84 +44,61 @@ struct PlanArguments {
   bool simplify = true;
 };
 
-const char* kUsage =
-    "usage: adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]\n"
+const char* const kSynopsis =
+    "adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]\n"
     "                 [--checker adsd|fcl] [--motion discrete|certified] [--seed S] [--no-simplify]\n"
-    "                 [--path OUT.path]\n"
-    "  --seed S   OMPL's random seed (1 to 4294967295; default: OMPL's own), so that runs with\n"
-    "             either checker can be repeated and compared on the same random draws\n"
-    "  --no-simplify   report and write the planner's path as found (comparisons of planning time\n"
-    "                  need not wait for the simplifier, which may use the whole time limit again)\n";
+    "                 [--path OUT.path]";
 
-PlanArguments parseArguments(const std::vector<std::string>& args) {
+const char* const kDescription =
+    "Solves a problem file (OMPL.app's .cfg; the default problem without one) with the adsd validity\n"
+    "checker, simplifies the path, prints a summary and writes the path in OMPL.app's .path format.";
+
+const char* const kDetails =
+    "Exit status: 0 solved, 1 not solved within the time, 2 bad input or usage (one line naming the\n"
+    "file, line and key, or the option).\n";
+
+/// Returns nullopt after printing the help.
+std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args) {
+  cli::CommandLine line("adsd plan", kSynopsis, kDescription, kDetails);
+  line.options()
+      ("planner", cli::value("NAME"), "the planner (default: the file's first [planner], else rrtconnect)")
+      ("time", cli::value("SECONDS"), "time limit, > 0 (default: [benchmark] time_limit, else 10)")
+      ("objective", cli::value("length|clearance"), "optimization objective (default: the file's)")
+      ("checker", cli::value("adsd|fcl"), "state validity checker (default adsd)")
+      ("motion", cli::value("discrete|certified"), "motion validator (default discrete)")
+      ("seed", cli::value("S"),
+       "OMPL's random seed (1 to 4294967295; default: OMPL's own), so that runs with either checker can be "
+       "repeated and compared on the same random draws")
+      ("no-simplify",
+       "report and write the planner's path as found (comparisons of planning time need not wait for the "
+       "simplifier, which may use the whole time limit again)")
+      ("path", cli::value("OUT.path"), "write the path to OUT.path");
+  line.positional("problem");
+  const std::optional<cli::Arguments> given = line.parse(args);
+  if (!given) return std::nullopt;
+
   PlanArguments a;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    const auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw InputError(arg + " needs a value");
-      return args[++i];
-    };
-    if (arg == "--planner") {
-      a.planner = value();
-    } else if (arg == "--time") {
-      const std::string& v = value();
-      char* end = nullptr;
-      const double s = std::strtod(v.c_str(), &end);
-      if (end != v.c_str() + v.size() || !(s > 0.0) || !(s < 1e7)) {
-        throw InputError("--time: expected seconds > 0, got '" + v + "'");
-      }
-      a.seconds = s;
-    } else if (arg == "--objective") {
-      const std::string& v = value();
-      if (v == "length") {
-        a.objective = ObjectiveKind::length;
-      } else if (v == "clearance") {
-        a.objective = ObjectiveKind::maxMinClearance;
-      } else {
-        throw InputError("--objective: expected length or clearance, got '" + v + "'");
-      }
-    } else if (arg == "--checker") {
-      const std::string& v = value();
-      if (v == "adsd") {
-        a.checker = CheckerKind::adsd;
-      } else if (v == "fcl") {
-        a.checker = CheckerKind::fcl;
-      } else {
-        throw InputError("--checker: expected adsd or fcl, got '" + v + "'");
-      }
-    } else if (arg == "--motion") {
-      const std::string& v = value();
-      if (v == "discrete") {
-        a.motion = MotionKind::discrete;
-      } else if (v == "certified") {
-        a.motion = MotionKind::certified;
-      } else {
-        throw InputError("--motion: expected discrete or certified, got '" + v + "'");
-      }
-    } else if (arg == "--seed") {
-      const std::string& v = value();
-      char* end = nullptr;
-      errno = 0;
-      const unsigned long long seed = std::strtoull(v.c_str(), &end, 10);
-      // OMPL's generator takes no seed 0; the digits check refuses the sign strtoull accepts.
-      if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || end != v.c_str() + v.size() ||
-          errno == ERANGE || seed < 1 || seed > 4294967295ULL) {
-        throw InputError("--seed: expected a whole number from 1 to 4294967295, got '" + v + "'");
-      }
-      a.seed = static_cast<std::uint32_t>(seed);
-    } else if (arg == "--no-simplify") {
-      a.simplify = false;
-    } else if (arg == "--path") {
-      a.pathFile = value();
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw InputError("unknown option '" + arg + "'");
-    } else if (a.problem.empty()) {
-      a.problem = arg;
-    } else {
-      throw InputError("more than one problem file ('" + a.problem + "', '" + arg + "')");
-    }
+  const std::vector<std::string> problems = given->texts("problem");
+  if (problems.size() > 1) {
+    throw cli::UsageError("more than one problem file ('" + problems[0] + "', '" + problems[1] + "')");
   }
-  if (a.problem.empty()) a.problem = defaultProblemFile();
+  a.planner = given->text("planner");
+  a.seconds = given->real("time", cli::RealInterval::above(0.0).below(1e7));
+  if (const auto objective = given->choice("objective", {"length", "clearance"})) {
+    a.objective = *objective == "length" ? ObjectiveKind::length : ObjectiveKind::maxMinClearance;
+  }
+  if (const auto checker = given->choice("checker", {"adsd", "fcl"})) {
+    a.checker = *checker == "adsd" ? CheckerKind::adsd : CheckerKind::fcl;
+  }
+  if (const auto motion = given->choice("motion", {"discrete", "certified"})) {
+    a.motion = *motion == "discrete" ? MotionKind::discrete : MotionKind::certified;
+  }
+  // OMPL's generator takes no seed 0.
+  if (const auto seed = given->whole("seed", 1, 4294967295ULL)) a.seed = static_cast<std::uint32_t>(*seed);
+  a.simplify = !given->has("no-simplify");
+  a.pathFile = given->text("path");
+  // Last: finding the shipped problems may fail, and the options' errors come first.
+  a.problem = problems.empty() ? defaultProblemFile() : problems.front();
   return a;
 }
 
@@ -177,7 +153,9 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
 }
 
 int plan(const std::vector<std::string>& args) {
-  const PlanArguments a = parseArguments(args);
+  const std::optional<PlanArguments> parsed = parseArguments(args);
+  if (!parsed) return 0;  // the help
+  const PlanArguments& a = *parsed;
   // Before anything draws a random number: OMPL seeds every new generator from one seeded one.
   if (a.seed) ompl::RNG::setSeed(*a.seed);
   const ProblemFile file = readProblemFile(a.problem);
@@ -247,12 +225,10 @@ int plan(const std::vector<std::string>& args) {
 /// \brief Entry point of `adsd plan`; \p args are the arguments after "plan".
 int planCommand(const std::vector<std::string>& args) {
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
-    std::cout << kUsage;
-    return 0;
-  }
   try {
     return plan(args);
+  } catch (const cli::UsageError& e) {
+    return cli::reportUsageError("adsd plan", e);
   } catch (const InputError& e) {
     std::cerr << "adsd plan: error: " << e.what() << '\n';
     return 2;

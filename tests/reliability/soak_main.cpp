@@ -19,9 +19,11 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <ompl/util/Console.h>
 
+#include "adsd/cli/command_line.h"
 #include "adsd/error.h"
 #include "adsd/planner/path_report.h"
 #include "adsd/planner/planner_registry.h"
@@ -47,21 +49,21 @@ long residentKib() {
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: %s PROBLEM.cfg MINUTES [SECONDS_PER_RUN]\n", argv[0]);
-    return 2;
+int soak(const adsd::cli::Arguments& given) {
+  const std::vector<std::string> args = given.texts("argument");
+  if (args.size() < 2 || args.size() > 4) {
+    throw adsd::cli::UsageError("expected PROBLEM.cfg MINUTES [SECONDS_PER_RUN [HEAP.csv]], got " +
+                                std::to_string(args.size()) + " arguments");
   }
-  const std::string cfg = argv[1];
-  const double minutes = std::atof(argv[2]);
-  const double secondsPerRun = argc > 3 ? std::atof(argv[3]) : 1.0;
+  const adsd::cli::RealInterval positive = adsd::cli::RealInterval::above(0.0).below(1e7);
+  const std::string cfg = args[0];
+  const double minutes = adsd::cli::parseReal(args[1], "MINUTES", positive);
+  const double secondsPerRun = args.size() > 2 ? adsd::cli::parseReal(args[2], "SECONDS_PER_RUN", positive) : 1.0;
   std::FILE* heapLog = nullptr;
-  if (argc > 4) {
-    heapLog = std::fopen(argv[4], "w");
+  if (args.size() > 3) {
+    heapLog = std::fopen(args[3].c_str(), "w");
     if (heapLog == nullptr) {
-      std::fprintf(stderr, "adsd_soak: cannot write '%s'\n", argv[4]);
+      std::fprintf(stderr, "adsd_soak: cannot write '%s'\n", args[3].c_str());
       return 2;
     }
     std::fprintf(heapLog, "run,seconds,in_use_bytes,arena_bytes,mmapped_bytes,rss_kib\n");
@@ -115,4 +117,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "adsd_soak: %s\n", e.what());
     return 2;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  adsd::cli::CommandLine line("adsd_soak", "adsd_soak PROBLEM.cfg MINUTES [SECONDS_PER_RUN [HEAP.csv]]",
+                              "The soak's workload: plans the problem again and again for MINUTES "
+                              "(tests/reliability/soak.sh samples its memory).",
+                              "Exit status 0; 1 when a solution has a negative clearance; 2 on bad usage or input.");
+  line.positional("argument");
+  return adsd::cli::runProgram(line, argc, argv, soak);
 }

@@ -1,0 +1,142 @@
+#include "adsd/cli/command_line.h"
+
+#include <algorithm>
+#include <iostream>
+#include <utility>
+
+namespace adsd::cli {
+
+po::typed_value<std::string>* value(const char* name) { return po::value<std::string>()->value_name(name); }
+
+po::typed_value<std::vector<std::string>>* values(const char* name) {
+  return po::value<std::vector<std::string>>()->value_name(name)->composing();
+}
+
+// ---- Arguments --------------------------------------------------------------------------------
+
+std::optional<std::string> Arguments::text(const std::string& name) const {
+  if (!has(name)) return std::nullopt;
+  return map_[name].as<std::string>();
+}
+
+std::vector<std::string> Arguments::texts(const std::string& name) const {
+  if (!has(name)) return {};
+  return map_[name].as<std::vector<std::string>>();
+}
+
+std::optional<std::uint64_t> Arguments::whole(const std::string& name, std::uint64_t min, std::uint64_t max) const {
+  const std::optional<std::string> given = text(name);
+  if (!given) return std::nullopt;
+  return parseWhole(*given, "--" + name, min, max);
+}
+
+std::optional<double> Arguments::real(const std::string& name, const RealInterval& range) const {
+  const std::optional<std::string> given = text(name);
+  if (!given) return std::nullopt;
+  return parseReal(*given, "--" + name, range);
+}
+
+std::optional<std::string> Arguments::choice(const std::string& name,
+                                             std::initializer_list<std::string_view> choices) const {
+  const std::optional<std::string> given = text(name);
+  if (!given) return std::nullopt;
+  if (std::find(choices.begin(), choices.end(), *given) != choices.end()) return given;
+  std::string list;
+  std::size_t i = 0;
+  for (const std::string_view c : choices) {
+    list += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string(c);
+    ++i;
+  }
+  throw UsageError("--" + name + ": expected " + list + ", got '" + *given + "'");
+}
+
+// ---- CommandLine ------------------------------------------------------------------------------
+
+CommandLine::CommandLine(std::string program, std::string synopsis, std::string description, std::string details)
+    : program_(std::move(program)),
+      synopsis_(std::move(synopsis)),
+      description_(std::move(description)),
+      details_(std::move(details)),
+      options_("options") {
+  help_.add_options()("help,h", "print this help and exit");
+}
+
+void CommandLine::positional(const std::string& name) { positional_ = name; }
+
+namespace {
+
+/// Boost's default style without guessing an option from a prefix of its name.
+constexpr int kStyle = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+
+/// Columns of the help's option list.
+constexpr unsigned kHelpWidth = 100;
+
+bool asksForHelp(const std::vector<std::string>& args) {
+  for (const std::string& a : args) {
+    if (a == "--") return false;  // what follows is arguments, not options
+    if (a == "--help" || a == "-h") return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<Arguments> CommandLine::parse(const std::vector<std::string>& args) const {
+  po::options_description all;
+  all.add(options_).add(help_);
+  po::positional_options_description positional;
+  if (positional_) all.add_options()(positional_->c_str(), po::value<std::vector<std::string>>());
+  if (positional_) positional.add(positional_->c_str(), -1);
+
+  po::variables_map map;
+  try {
+    po::store(po::command_line_parser(args).options(all).positional(positional).style(kStyle).run(), map);
+    po::notify(map);
+  } catch (const po::error& e) {
+    // --help wins over whatever else is wrong on the line.
+    if (asksForHelp(args)) {
+      printHelp(std::cout);
+      return std::nullopt;
+    }
+    // Boost's messages name the option ("unrecognised option '--x'", "the required argument for
+    // option '--time' is missing"); a positional argument without a place is its own case.
+    if (dynamic_cast<const po::too_many_positional_options_error*>(&e) != nullptr) {
+      throw UsageError("unexpected argument (this command takes options only)");
+    }
+    throw UsageError(e.what());
+  }
+  if (map.count("help")) {
+    printHelp(std::cout);
+    return std::nullopt;
+  }
+  return Arguments(std::move(map));
+}
+
+void CommandLine::printHelp(std::ostream& out) const {
+  // A group prints its own caption; the options are listed under "options:" once.
+  // Wider than Boost's 80 columns, so that names like "--objective length|clearance" keep a gap
+  // before their description.
+  po::options_description listed(kHelpWidth, kHelpWidth / 2);
+  for (const auto& option : options_.options()) listed.add(option);
+  for (const auto& option : help_.options()) listed.add(option);
+  out << "usage: " << synopsis_ << "\n\n" << description_ << "\n\noptions:\n" << listed;
+  if (!details_.empty()) out << '\n' << details_;
+  if (!details_.empty() && details_.back() != '\n') out << '\n';
+}
+
+int reportUsageError(const std::string& program, const UsageError& error) {
+  std::cerr << program << ": error: " << error.what() << " (" << program << " --help)\n";
+  return kUsageExitStatus;
+}
+
+int runProgram(const CommandLine& line, int argc, char** argv, const std::function<int(const Arguments&)>& run) {
+  try {
+    const std::optional<Arguments> given = line.parse(std::vector<std::string>(argv + 1, argv + argc));
+    if (!given) return 0;
+    return run(*given);
+  } catch (const UsageError& e) {
+    return reportUsageError(line.program(), e);
+  }
+}
+
+}  // namespace adsd::cli
