@@ -106,6 +106,31 @@ expect_contains("${OUT}" "witness A   1 " "witness A on the face x = 1")
 expect_contains("${OUT}" "witness B   2 " "witness B on the face x = 2")
 expect_contains("${OUT}" "counters" "summary counters")
 expect_contains("${OUT}" "time" "summary time")
+expect_contains("${OUT}" "path        from scratch" "one query: the paper's stages, no trees")
+run_adsd(0 distance cube.obj cube_at_3.obj --path tree)
+expect_contains("${OUT}" "path        sub-mesh trees, built once" "--path tree")
+expect_contains("${OUT}" "distance    1\n" "the same distance on trees")
+
+# Both paths, and auto (3 poses: from scratch), answer the pose file alike; the last line says
+# which path ran.
+foreach(path tree scratch auto)
+  run_adsd(0 distance cube.obj cube.obj --poses poses.txt --path ${path})
+  foreach(want "line 2: distance 1 " "line 4: distance 4 " "line 5: distance 2 ")
+    expect_contains("${OUT}" "${want}" "--path ${path}: ${want}")
+  endforeach()
+  if(path STREQUAL "tree")
+    expect_contains("${OUT}" "path: sub-mesh trees" "--path tree: the last line")
+  else()
+    expect_contains("${OUT}" "path: from scratch" "--path ${path}: the last line")
+  endif()
+endforeach()
+# Four poses or more: auto builds the trees.
+file(READ "${WORK_DIR}/poses.txt" three_poses)
+file(WRITE "${WORK_DIR}/poses6.txt" "${three_poses}${three_poses}")
+run_adsd(0 distance cube.obj cube.obj --poses poses6.txt)
+expect_contains("${OUT}" "path: sub-mesh trees" "six poses: trees")
+expect_bad_input(distance cube.obj cube.obj --path sideways)
+expect_contains("${ERR}" "--path" "unknown path")
 
 # CSV rows from a pose file, then the same from stdin.
 foreach(source poses.txt -)
