@@ -14,6 +14,9 @@
 #include <set>
 #include <sstream>
 
+#include <locale.h>  // newlocale, strtod_l (POSIX): numbers read in the C locale
+#include <stdlib.h>
+
 #include <boost/program_options/options_description.hpp>
 #include <boost/program_options/parsers.hpp>
 
@@ -179,8 +182,12 @@ bool isDecimalNumber(const std::string& v) {
 double parseNumber(const Entry& e, const std::string& source) {
   const std::string& v = e.value;
   if (v.empty()) throw InputError(locate(source, e).describe() + ": expected a number, the value is empty");
+  // strtod reads with the decimal point of the process's locale: an OMPL program that called
+  // setlocale(LC_ALL, "") under a decimal-comma locale would have every "0.5" refused. The C
+  // locale's reading, whatever the process's, is the file format's (and OMPL's own conversion's).
+  static const locale_t classic = newlocale(LC_ALL_MASK, "C", static_cast<locale_t>(nullptr));
   char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
+  const double x = strtod_l(v.c_str(), &end, classic);
   const bool readWhole = end == v.c_str() + v.size();
   if (readWhole && !std::isfinite(x)) {
     throw InputError(locate(source, e).describe() + ": expected a finite number, got " + quoted(v));
