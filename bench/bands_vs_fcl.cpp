@@ -39,8 +39,7 @@
 #include <string>
 #include <vector>
 
-#include <boost/program_options.hpp>
-
+#include "adsd/cli/command_line.h"
 #include "adsd/distance.h"
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
@@ -95,48 +94,44 @@ std::vector<std::string> splitList(const std::string& text) {
   return out;
 }
 
-Options parse(int argc, char** argv) {
-  namespace po = boost::program_options;
-  Options o;
-  std::string scenes = "cows,bunnies,camels", pairs, bandList;
-  po::options_description d("bench_bands: every query mode against FCL, band by band (near, mid, far, uniform, collision)");
-  d.add_options()("help,h", "this text")(
-      "scenes", po::value(&scenes)->default_value(scenes),
-      "scenes of bench_scenes (mesh pairs and problem_NAME planning problems), comma-separated; 'all' for every rigid one")(
-      "pairs", po::value(&pairs), "more mesh pairs, FILE_A:FILE_B,... (any mesh files adsd reads)")(
-      "poses", po::value(&o.poses)->default_value(o.poses), "queries per band")(
-      "rounds", po::value(&o.rounds)->default_value(o.rounds), "timed rounds over each band's queries")(
-      "seed", po::value(&o.seed)->default_value(o.seed), "seed of every band's drawing")(
-      "bands", po::value(&bandList), "bands to run, comma-separated (default: near,mid,far,uniform,collision)")(
-      "summary-md", po::value(&o.summaryMarkdown), "also write the per-band summary as a Markdown table to this file")(
-      "csv", po::value(&o.csv), "one row per query and method: scene, band, method, distance, microseconds")(
+/// The command line (adsd::cli: the same rules and messages as every program here).
+adsd::cli::CommandLine commandLine() {
+  adsd::cli::CommandLine line(
+      "bench_bands",
+      "bench_bands [--scenes a,b,...] [--pairs A:B,...] [--bands near,...] [--poses N] [--rounds R] [--seed S]\n"
+      "            [--csv FILE] [--summary-md FILE] [--quick]",
+      "Every query mode against FCL, band by band: near contact, mid range, far apart, uniform planning states, "
+      "in collision.",
+      "Exit status: 0, 2 for a bad command line or a missing mesh, 3 when an answer disagrees with FCL's.");
+  line.options()("scenes", adsd::cli::value("LIST"),
+                 "scenes of bench_scenes (mesh pairs, problem_NAME planning problems), comma-separated, or 'all' for "
+                 "every rigid one (default cows,bunnies,camels)")(
+      "pairs", adsd::cli::value("A:B,..."), "more mesh pairs, FILE_A:FILE_B, comma-separated (any mesh file adsd reads)")(
+      "bands", adsd::cli::value("LIST"), "bands to run, comma-separated (default near,mid,far,uniform,collision)")(
+      "poses", adsd::cli::value("N"), "queries per band (default 40)")(
+      "rounds", adsd::cli::value("R"), "timed rounds over each band's queries (default 3)")(
+      "seed", adsd::cli::value("S"), "seed of every band's drawing (default 2611)")(
+      "csv", adsd::cli::value("FILE"), "one row per query and method: scene, band, method, query, L, answer, microseconds")(
+      "summary-md", adsd::cli::value("FILE"), "also write the per-band summary as a Markdown table")(
       "quick", "10 poses, 1 round: a smoke run");
-  po::variables_map vm;
-  try {
-    po::store(po::parse_command_line(argc, argv, d), vm);
-    po::notify(vm);
-  } catch (const po::error& e) {
-    std::fprintf(stderr, "bench_bands: %s\n", e.what());
-    std::exit(2);
-  }
-  if (vm.count("help")) {
-    std::ostringstream text;
-    text << d;
-    std::printf("%s", text.str().c_str());
-    std::exit(0);
-  }
-  if (vm.count("quick")) o.poses = 10, o.rounds = 1;
-  if (o.poses == 0 || o.rounds <= 0) {
-    std::fprintf(stderr, "bench_bands: --poses and --rounds must be positive\n");
-    std::exit(2);
-  }
-  o.bands = splitList(bandList);
+  return line;
+}
+
+Options optionsFrom(const adsd::cli::Arguments& given) {
+  Options o;
+  o.poses = given.whole("poses", 1, 100000).value_or(o.poses);
+  o.rounds = static_cast<int>(given.whole("rounds", 1, 1000).value_or(static_cast<std::uint64_t>(o.rounds)));
+  o.seed = given.whole("seed").value_or(o.seed);
+  o.csv = given.text("csv").value_or("");
+  o.summaryMarkdown = given.text("summary-md").value_or("");
+  if (given.has("quick")) o.poses = 10, o.rounds = 1;
+  o.bands = splitList(given.text("bands").value_or(""));
   for (const std::string& band : o.bands) {
     if (band != "near" && band != "mid" && band != "far" && band != "uniform" && band != "collision") {
-      std::fprintf(stderr, "bench_bands: unknown band '%s' (near, mid, far, uniform, collision)\n", band.c_str());
-      std::exit(2);
+      throw adsd::cli::UsageError("--bands: expected near, mid, far, uniform or collision, got '" + band + "'");
     }
   }
+  const std::string scenes = given.text("scenes").value_or("cows,bunnies,camels");
   if (scenes == "all") {
     for (const std::string& name : adsd::bench::distanceSceneNames()) {
       if (name != "teddies_deforming") o.scenes.push_back(name);
@@ -144,12 +139,9 @@ Options parse(int argc, char** argv) {
   } else {
     o.scenes = splitList(scenes);
   }
-  for (const std::string& pair : splitList(pairs)) {
+  for (const std::string& pair : splitList(given.text("pairs").value_or(""))) {
     const auto colon = pair.find(':');
-    if (colon == std::string::npos) {
-      std::fprintf(stderr, "bench_bands: --pairs wants FILE_A:FILE_B, got '%s'\n", pair.c_str());
-      std::exit(2);
-    }
+    if (colon == std::string::npos) throw adsd::cli::UsageError("--pairs: expected FILE_A:FILE_B, got '" + pair + "'");
     o.pairs.emplace_back(pair.substr(0, colon), pair.substr(colon + 1));
   }
   return o;
@@ -433,8 +425,13 @@ void summary(const std::vector<BandResult>& results, const std::string& markdown
 
 }  // namespace
 
+int run(const Options& o, int argc, char** argv);
+
 int main(int argc, char** argv) {
-  const Options o = parse(argc, argv);
+  return adsd::cli::runProgram(commandLine(), argc, argv,
+                               [&](const adsd::cli::Arguments& given) { return run(optionsFrom(given), argc, argv); });
+}
+int run(const Options& o, int argc, char** argv) {
   std::printf("bench_bands:");
   for (int i = 1; i < argc; ++i) std::printf(" %s", argv[i]);
   std::printf("\n%zu queries per band, %d rounds, seed %llu; median microseconds per query (both libraries keep "

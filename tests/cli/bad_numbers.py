@@ -2,7 +2,8 @@
 """Every program's answer to bad numbers on its command line, under a German locale (decimal comma).
 
   bad_numbers.py NAME=PATH...      (NAME: adsd, adsd_stress, adsd_soak, bench_scenes, bench_distance_vs_fcl,
-                                    bench_scene_counters, bench_checker_calls, bench_mesh_info)
+                                    bench_bands, bench_scene_counters, bench_checker_calls,
+                                    bench_mesh_info)
 
 Checks, for each program given: a malformed or out-of-range number ("abc", "-1", "1e3x", "0,5", 0
 where a count must be positive) stops it with exit status 2, exactly one line on stderr naming the
@@ -60,6 +61,15 @@ BAD = {
         (["--poses", "1e3x"], "--poses"),
         (["--rounds", "0"], "--rounds"),
         (["--seed", "-1"], "--seed"),
+        (["--bogus"], "--bogus"),
+    ],
+    "bench_bands": [
+        (["--poses", "0"], "--poses"),
+        (["--poses", "1e3x"], "--poses"),
+        (["--rounds", "-1"], "--rounds"),
+        (["--seed", "abc"], "--seed"),
+        (["--bands", "nearby"], "--bands"),
+        (["--pairs", "a.off"], "--pairs"),
         (["--bogus"], "--bogus"),
     ],
     "bench_scene_counters": [
