@@ -54,17 +54,18 @@ constexpr const char* kDetails =
     "line, 0 without --poses), triangle_a, triangle_b and the query's counters. Witness fields\n"
     "are empty when the query needed no triangle pair to prove its status.\n"
     "\n"
-    "Path: with --path auto (the default), a pose file of at least 4 lines is answered on sub-mesh\n"
+    "Path: with --path auto (the default), a pose file of at least 16 lines is answered on sub-mesh\n"
     "trees built once for both meshes (what a planner keeps between queries), fewer poses from\n"
     "scratch by the paper's stages (no preprocessing); the summary, and the last line of the\n"
     "line-per-query output, say which path ran and what building the trees took.\n"
     "\n"
     "Exit status: 0 done, 2 bad input or usage (one line on stderr naming the file and line).\n";
 
-/// Poses from which `--path auto` builds trees: building both trees costs about as much as a
-/// few queries from scratch on the same meshes (near contact, where most of a planner's exact
-/// queries fall), so from this many queries on the trees have paid for themselves.
-constexpr std::size_t kPosesForTrees = 4;
+/// Poses from which `--path auto` builds trees: building both trees costs as much as a dozen or
+/// a few dozen queries from scratch on the same meshes (the build grows as n log n in the
+/// triangles, a query from scratch about as n), so from here on the trees pay for themselves,
+/// and their queries are then many times cheaper (docs/commands.md says how to measure both).
+constexpr std::size_t kPosesForTrees = 16;
 
 enum class QueryPath { automatic, tree, scratch };
 
