@@ -1,6 +1,6 @@
 // `adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]
 //            [--checker adsd|fcl] [--motion discrete|certified] [--seed S] [--no-simplify]
-//            [--path OUT.path]`
+//            [--path OUT.path] [--html OUT.html]`
 //
 // Solves a problem file (the default problem without one), simplifies the path, prints a summary
 // and writes the path in OMPL.app's .path format. Exit status: 0 solved, 1 not solved within the
@@ -26,6 +26,7 @@
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
 #include "commands.h"
+#include "viewer_html.h"
 
 namespace adsd::app {
 
@@ -41,6 +42,7 @@ struct PlanArguments {
   CheckerKind checker = CheckerKind::adsd;
   MotionKind motion = MotionKind::discrete;
   std::optional<std::string> pathFile;
+  std::optional<std::string> htmlFile;  // the browser viewer (viewer_html.h)
   std::optional<std::uint32_t> seed;
   bool simplify = true;
 };
@@ -48,7 +50,7 @@ struct PlanArguments {
 const char* kUsage =
     "usage: adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]\n"
     "                 [--checker adsd|fcl] [--motion discrete|certified] [--seed S] [--no-simplify]\n"
-    "                 [--path OUT.path]\n"
+    "                 [--path OUT.path] [--html OUT.html]\n"
     "  --seed S   OMPL's random seed (1 to 4294967295; default: OMPL's own), so that runs with\n"
     "             either checker can be repeated and compared on the same random draws\n"
     "  --no-simplify   report and write the planner's path as found (comparisons of planning time\n"
@@ -114,6 +116,8 @@ PlanArguments parseArguments(const std::vector<std::string>& args) {
       a.simplify = false;
     } else if (arg == "--path") {
       a.pathFile = value();
+    } else if (arg == "--html") {
+      a.htmlFile = value();
     } else if (!arg.empty() && arg[0] == '-') {
       throw InputError("unknown option '" + arg + "'");
     } else if (a.problem.empty()) {
@@ -238,6 +242,10 @@ int plan(const std::vector<std::string>& args) {
   if (a.pathFile) {
     writePathFile(*a.pathFile, path, file.space);
     std::printf("path file   %s\n", a.pathFile->c_str());
+  }
+  if (a.htmlFile) {
+    writeViewerHtml(*a.htmlFile, file, problem, &path, "adsd plan, planner " + plannerName);
+    std::printf("viewer      %s\n", a.htmlFile->c_str());
   }
   return 0;
 }
