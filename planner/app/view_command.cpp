@@ -149,6 +149,9 @@ int view(const std::vector<std::string>& args) {
   PlanningProblem problem(file, CheckingOptions{});
   for (const std::string& w : problem.warnings()) std::cerr << "adsd view: warning: " << w << '\n';
 
+  // As `adsd plan` does before solving: the space's validity-checking resolution, which the
+  // page's states are interpolated to, is set up here.
+  problem.setup().setup();
   std::optional<ompl::geometric::PathGeometric> path;
   if (a->pathFile) path = readPathFile(*a->pathFile, problem.spaceInformation(), file.space);
   const ViewerSummary s = writeViewerHtml(a->html, file, problem, path ? &*path : nullptr,
