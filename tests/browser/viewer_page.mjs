@@ -73,7 +73,8 @@ export async function launchBrowser() {
     viewport: { width: 1100, height: 760 },
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
            '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           // --disable-gpu leaves WebGL to the software renderer, which chromium offers only when asked.
+           // WebGL on the CPU (SwiftShader): chromium 156 falls back to it by itself under --disable-gpu,
+           // later versions only when asked.
            '--enable-unsafe-swiftshader', '--use-angle=swiftshader'],
   });
   return {
