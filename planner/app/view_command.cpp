@@ -90,7 +90,8 @@ std::optional<ViewArguments> parseArguments(const std::vector<std::string>& args
 ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::SpaceInformationPtr& si,
                                             RigidBodySpace space) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file + ": no such path file");
+  if (!std::filesystem::exists(file, ec)) throw InputError(file + ": no such path file");
+  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file + ": is a directory or a device, not a path file");
   std::ifstream in(file);
   if (!in) throw InputError(file + ": cannot be opened for reading");
   const std::size_t expected = space == RigidBodySpace::se2 ? 3 : 7;
