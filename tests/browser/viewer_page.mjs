@@ -167,6 +167,17 @@ export async function checkViewer(browser, { html, cfg, expectedMin, screenshot 
     assert.equal(end.index, state.count - 1, 'the slider at its end shows the last state');
     assertSamePose(end.pose, cfgPose(cfg, 'goal'), 'robot at the slider end vs the cfg goal');
 
+    // Play from the start: the robot moves along the path by itself.
+    if (state.count > 2) {
+      await page.evaluate(() => adsdViewer.setIndex(0));
+      await page.locator('#play').click();
+      await page.waitForFunction(() => adsdViewer.index > 0, null, { timeout: 10_000 });
+      await page.locator('#play').click();  // pause
+      const paused = await page.evaluate(() => adsdViewer.index);
+      await page.waitForTimeout(300);
+      assert.equal(await page.evaluate(() => adsdViewer.index), paused, 'Pause stops the robot');
+    }
+
     const least = Math.min(...state.clearance);
     assert.equal(state.plot.min, least, 'the plot marks the least clearance');
     assert.equal(state.clearance[state.plot.minIndex], least);
