@@ -19,9 +19,11 @@ packages=(
   slurm-wlm munge
   # Locale sources: tests/cli compiles a German locale (decimal comma) with localedef.
   locales
+  # The browser viewer's test (tests/browser): Debian's chromium, driven headless by playwright-core.
+  chromium
 )
-# npm (for the npm meshes): only when there is none, as Node.js from elsewhere ships its own and
-# conflicts with Debian's npm package.
+# npm (for the npm meshes, and for three.js and playwright-core in viewer/): only when there is
+# none, as Node.js from elsewhere ships its own and conflicts with Debian's npm package.
 command -v npm >/dev/null || packages+=(npm)
 
 missing=()
@@ -29,16 +31,23 @@ for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [[ ${#missing[@]} -eq 0 ]]; then
-  echo "install-debian-deps: everything is installed"
-  exit 0
+  echo "install-debian-deps: every Debian package is installed"
+else
+  sudo_cmd=()
+  if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || { echo "install-debian-deps: error: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
+    sudo_cmd=(sudo)
+  fi
+  echo "install-debian-deps: installing ${missing[*]}"
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-sudo_cmd=()
-if [[ $(id -u) -ne 0 ]]; then
-  command -v sudo >/dev/null || { echo "install-debian-deps: error: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
-  sudo_cmd=(sudo)
+# The viewer's npm packages (viewer/package-lock.json): three.js, which the build embeds in the
+# adsd program, and playwright-core for the browser test. Only when missing or out of date.
+viewer="$(cd "$(dirname "$0")/.." && pwd)/viewer"
+if [[ ! -f "$viewer/node_modules/.package-lock.json" || "$viewer/package-lock.json" -nt "$viewer/node_modules/.package-lock.json" ]]; then
+  echo "install-debian-deps: npm ci in $viewer"
+  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error)
 fi
-echo "install-debian-deps: installing ${missing[*]}"
-"${sudo_cmd[@]}" apt-get update -qq
-DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 echo "install-debian-deps: done"

@@ -23,6 +23,8 @@ const Command kCommands[] = {
      adsd::app::planCommand},
     {"benchmark", "OMPL benchmark of a problem file for each checker and motion validator: log, database, plots",
      adsd::app::benchmarkCommand},
+    {"view", "write a self-contained HTML page showing a problem, a path, its closest points and clearance",
+     adsd::app::viewCommand},
 };
 
 // The same layout as each command's help (adsd::cli::CommandLine): usage, what it does, then the list.

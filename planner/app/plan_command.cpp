@@ -1,6 +1,6 @@
 // `adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]
 //            [--checker adsd|fcl] [--motion discrete|certified] [--seed S] [--no-simplify]
-//            [--path OUT.path]`
+//            [--path OUT.path] [--html OUT.html]`
 //
 // Solves a problem file (the default problem without one), simplifies the path, prints a summary
 // and writes the path in OMPL.app's .path format. Exit status: 0 solved, 1 not solved within the
@@ -25,6 +25,7 @@
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
 #include "commands.h"
+#include "viewer_html.h"
 
 namespace adsd::app {
 
@@ -40,6 +41,7 @@ struct PlanArguments {
   CheckerKind checker = CheckerKind::adsd;
   MotionKind motion = MotionKind::discrete;
   std::optional<std::string> pathFile;
+  std::optional<std::string> htmlFile;  // the browser viewer (viewer_html.h)
   std::optional<std::uint32_t> seed;
   bool simplify = true;
 };
@@ -47,7 +49,7 @@ struct PlanArguments {
 const char* const kSynopsis =
     "adsd plan [PROBLEM.cfg] [--planner NAME] [--time SECONDS] [--objective length|clearance]\n"
     "                 [--checker adsd|fcl] [--motion discrete|certified] [--seed S] [--no-simplify]\n"
-    "                 [--path OUT.path]";
+    "                 [--path OUT.path] [--html OUT.html]";
 
 const char* const kDescription =
     "Solves a problem file (OMPL.app's .cfg; the default problem without one) with the adsd validity\n"
@@ -72,7 +74,8 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
       ("no-simplify",
        "report and write the planner's path as found (comparisons of planning time need not wait for the "
        "simplifier, which may use the whole time limit again)")
-      ("path", cli::value("OUT.path"), "write the path to OUT.path");
+      ("path", cli::value("OUT.path"), "write the path to OUT.path")
+      ("html", cli::value("OUT.html"), "write the browser viewer of the problem and its path (one page, opens offline)");
   line.positional("problem");
   const std::optional<cli::Arguments> given = line.parse(args);
   if (!given) return std::nullopt;
@@ -97,6 +100,7 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
   if (const auto seed = given->whole("seed", 1, 4294967295ULL)) a.seed = static_cast<std::uint32_t>(*seed);
   a.simplify = !given->has("no-simplify");
   a.pathFile = given->text("path");
+  a.htmlFile = given->text("html");
   // Last: finding the shipped problems may fail, and the options' errors come first.
   a.problem = problems.empty() ? defaultProblemFile() : problems.front();
   return a;
@@ -216,6 +220,10 @@ int plan(const std::vector<std::string>& args) {
   if (a.pathFile) {
     writePathFile(*a.pathFile, path, file.space);
     std::printf("path file   %s\n", a.pathFile->c_str());
+  }
+  if (a.htmlFile) {
+    writeViewerHtml(*a.htmlFile, file, problem, &path, "adsd plan, planner " + plannerName);
+    std::printf("viewer      %s\n", a.htmlFile->c_str());
   }
   return 0;
 }

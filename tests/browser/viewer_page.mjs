@@ -1,0 +1,199 @@
+// What the browser tests share: running `adsd`, headless Debian chromium through playwright-core,
+// and the checks every viewer page must pass (tests/browser/README.md).
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import { createRequire } from 'node:module';
+import os from 'node:os';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const here = path.dirname(new URL(import.meta.url).pathname);
+// playwright-core is installed with three by `npm ci` in viewer/ (cmake/install-debian-deps.sh).
+const require = createRequire(path.join(here, '..', '..', 'viewer', 'package.json'));
+const { chromium } = require('playwright-core');
+
+export const adsd = process.env.ADSD ?? 'build/planner/app/adsd';
+export const problemsDir = process.env.ADSD_PROBLEMS ?? 'build/problem_files';
+export const outDir = process.env.ADSD_BROWSER_OUT ?? fs.mkdtempSync(path.join(os.tmpdir(), 'adsd-browser-'));
+fs.mkdirSync(outDir, { recursive: true });
+
+/** Runs adsd; returns { status, stdout, stderr }. */
+export function run(args) {
+  const r = spawnSync(adsd, args, { encoding: 'utf8', timeout: 600_000 });
+  if (r.error) throw r.error;
+  return { status: r.status, stdout: r.stdout, stderr: r.stderr };
+}
+
+/** The "clearance   min X" that `adsd plan` and `adsd view` print. */
+export function printedMinClearance(stdout) {
+  const m = /^clearance\s+min\s+(\S+?),?\s/m.exec(stdout);
+  assert.ok(m, `no clearance line in:\n${stdout}`);
+  return Number(m[1]);
+}
+
+/**
+ * Start or goal of a .cfg, read here from the file itself (not through adsd): position and the
+ * quaternion [x, y, z, w] of yaw theta about z (SE(2)) or of angle theta about the axis (SE(3)).
+ */
+export function cfgPose(cfgFile, which) {
+  const values = {};
+  for (const line of fs.readFileSync(cfgFile, 'utf8').split('\n')) {
+    const m = /^\s*(start|goal)\.([\w.]+)\s*=\s*(\S+)/.exec(line);
+    if (m && m[1] === which) values[m[2]] = Number(m[3]);
+  }
+  const half = values.theta / 2;
+  let axis = [0, 0, 1];
+  if ('axis.x' in values) {
+    const n = Math.hypot(values['axis.x'], values['axis.y'], values['axis.z']);
+    axis = [values['axis.x'] / n, values['axis.y'] / n, values['axis.z'] / n];
+  }
+  return {
+    position: [values.x, values.y, values.z ?? 0],
+    quaternion: [axis[0] * Math.sin(half), axis[1] * Math.sin(half), axis[2] * Math.sin(half), Math.cos(half)],
+  };
+}
+
+/** Asserts that pose \p actual (from the page) is \p expected: same position (to rounding), same rotation. */
+export function assertSamePose(actual, expected, what) {
+  const gap = Math.hypot(...actual.position.map((v, i) => v - expected.position[i]));
+  const tolerance = 1e-9 * (1 + Math.hypot(...expected.position));
+  assert.ok(gap <= tolerance, `${what}: position ${actual.position} is ${gap} from ${expected.position}`);
+  // q and -q are the same rotation.
+  const dot = Math.abs(actual.quaternion.reduce((s, v, i) => s + v * expected.quaternion[i], 0));
+  assert.ok(dot >= 1 - 1e-9, `${what}: quaternion ${actual.quaternion} is not ${expected.quaternion} (|dot| ${dot})`);
+}
+
+/** Headless Debian chromium with a fresh profile, no network of its own; WebGL through SwiftShader. */
+export async function launchBrowser() {
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'adsd-chromium-'));
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    viewport: { width: 1100, height: 760 },
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+           '--disable-background-networking', '--disable-component-update', '--disable-sync',
+           // WebGL on the CPU (SwiftShader): chromium 156 falls back to it by itself under --disable-gpu,
+           // later versions only when asked.
+           '--enable-unsafe-swiftshader', '--use-angle=swiftshader'],
+  });
+  return {
+    context,
+    async close() {
+      await context.close();
+      fs.rmSync(profile, { recursive: true, force: true });
+    },
+  };
+}
+
+/**
+ * Opens a viewer page from its file:// URL and waits for it to be ready; collects console errors,
+ * page errors and every request it makes.
+ */
+export async function openViewer(browser, htmlFile) {
+  const page = await browser.context.newPage();
+  const errors = [];
+  const requests = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(`console: ${m.text()}`); });
+  page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
+  page.on('request', (r) => requests.push(r.url()));
+  await page.goto(pathToFileURL(path.resolve(htmlFile)).href);
+  await page.waitForFunction(() => window.adsdViewer?.ready === true, null, { timeout: 60_000 })
+    .catch((e) => { throw new Error(`${htmlFile}: the viewer did not get ready (${errors.join('; ')}): ${e.message}`); });
+  // Two frames, so that the animation loop has drawn the first state.
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  return { page, errors, requests };
+}
+
+/**
+ * Pixels of the 3D view that differ from the clear colour, and pixels that change when the robot
+ * is hidden (the robot really is drawn, wherever it is and whatever covers it).
+ */
+export async function countPixels(page) {
+  return page.evaluate(() => {
+    const viewer = window.adsdViewer;
+    const source = document.querySelector('#view canvas');
+    const copy = document.createElement('canvas');
+    copy.width = source.width;
+    copy.height = source.height;
+    const g = copy.getContext('2d', { willReadFrequently: true });
+    const grab = () => {
+      g.drawImage(source, 0, 0);
+      return g.getImageData(0, 0, copy.width, copy.height).data;
+    };
+    viewer.showRobot(true);
+    const withRobot = grab();
+    viewer.showRobot(false);
+    const withoutRobot = grab();
+    viewer.showRobot(true);
+    const [br, bg, bb] = viewer.backgroundColor;
+    let drawn = 0, robot = 0;
+    for (let i = 0; i < withRobot.length; i += 4) {
+      const [r, gr, b] = [withRobot[i], withRobot[i + 1], withRobot[i + 2]];
+      if (Math.abs(r - br) + Math.abs(gr - bg) + Math.abs(b - bb) > 24) drawn++;
+      if (Math.abs(r - withoutRobot[i]) + Math.abs(gr - withoutRobot[i + 1]) + Math.abs(b - withoutRobot[i + 2]) > 24) robot++;
+    }
+    return { total: withRobot.length / 4, drawn, robot };
+  });
+}
+
+/**
+ * The checks of issue 18 on one page: opens offline without errors, draws the scene, the robot
+ * starts at the cfg's start and the slider's end puts it at the cfg's goal, the plot's minimum is
+ * \p expectedMin (as printed, six significant digits), and the witness points are as far apart as
+ * the clearance says. Leaves the robot at the minimum and saves a screenshot to \p screenshot.
+ */
+export async function checkViewer(browser, { html, cfg, expectedMin, screenshot }) {
+  const { page, errors, requests } = await openViewer(browser, html);
+  try {
+    const offline = requests.filter((u) => !/^(file|blob|data):/.test(u));
+    assert.deepEqual(offline, [], 'the page asked the network');
+
+    const state = await page.evaluate(() => ({
+      count: adsdViewer.count, plot: adsdViewer.plot, clearance: adsdViewer.clearance,
+      witnessGaps: adsdViewer.clearance.map((c, i) => adsdViewer.witnessDistance(i) - c),
+      triangles: adsdViewer.renderedTriangles(), start: adsdViewer.robotPose(),
+      sliderMax: Number(document.getElementById('slider').max), diagonal: adsdViewer.sceneDiagonal,
+    }));
+    assert.ok(state.triangles > 0, 'WebGL drew no triangles');
+    const pixels = await countPixels(page);
+    assert.ok(pixels.drawn > 0.02 * pixels.total, `only ${pixels.drawn} of ${pixels.total} pixels differ from the background`);
+    assert.ok(pixels.robot > 20, `hiding the robot changes only ${pixels.robot} pixels`);
+
+    assertSamePose(state.start, cfgPose(cfg, 'start'), 'robot at state 0 vs the cfg start');
+    // As a person would: the End key on the focused slider moves it to its last value.
+    await page.locator('#slider').press('End');
+    const end = await page.evaluate(() => ({ index: adsdViewer.index, pose: adsdViewer.robotPose() }));
+    assert.equal(end.index, state.count - 1, 'the slider at its end shows the last state');
+    assertSamePose(end.pose, cfgPose(cfg, 'goal'), 'robot at the slider end vs the cfg goal');
+
+    // Play from the start: the robot moves along the path by itself.
+    if (state.count > 2) {
+      await page.evaluate(() => adsdViewer.setIndex(0));
+      await page.locator('#play').click();
+      await page.waitForFunction(() => adsdViewer.index > 0, null, { timeout: 10_000 });
+      await page.locator('#play').click();  // pause
+      const paused = await page.evaluate(() => adsdViewer.index);
+      await page.waitForTimeout(300);
+      assert.equal(await page.evaluate(() => adsdViewer.index), paused, 'Pause stops the robot');
+    }
+
+    const least = Math.min(...state.clearance);
+    assert.equal(state.plot.min, least, 'the plot marks the least clearance');
+    assert.equal(state.clearance[state.plot.minIndex], least);
+    assert.ok(Math.abs(state.plot.min - expectedMin) <= 5e-6 * Math.abs(expectedMin) + 1e-300,
+              `plot minimum ${state.plot.min}, adsd printed ${expectedMin}`);
+    // The witnesses come from adsd's exact distance; the clearance from the checker. Same engine:
+    // the same number, to the core's accuracy (1e-10 of the scene's size).
+    const worstGap = Math.max(...state.witnessGaps.map(Math.abs));
+    assert.ok(worstGap <= 1e-8 * state.diagonal, `witness points are up to ${worstGap} off the clearance`);
+
+    await page.evaluate(() => adsdViewer.setIndex(adsdViewer.plot.minIndex));
+    await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+    if (screenshot) await page.screenshot({ path: screenshot });
+    assert.deepEqual(errors, [], 'console or page errors');
+    return state;
+  } finally {
+    await page.close();
+  }
+}
