@@ -1,19 +1,20 @@
-// The structure check for PLY files, run before assimp reads them.
+// The structure check for PLY files, run before CGAL's PLY reader (ply_reader.cpp) reads them.
 //
-// Assimp 5.2's PLY reader loops forever on a header without end_header or with an element line
-// that lacks its count, aborts the process (a failed ai_assert) on a blank line inside ASCII data,
-// and fills short or missing data with whatever comes next. So the header is parsed here, the
-// data is walked instance by instance (ASCII: one instance per line, as PLY writers emit it;
-// binary: record by record, list lengths included), and face indices are checked against the
-// vertex count. Anything off is an error naming the line (ASCII) or the element and instance.
+// CGAL's reader answers only "false" on a malformed file, and accepts a face index beyond the
+// vertex count. So the header is parsed here, the data is walked instance by instance (ASCII: one
+// instance per line, as PLY writers emit it; binary: record by record, list lengths included),
+// face indices are checked against the vertex count, and an ASCII coordinate (x, y, z of a vertex)
+// must be finite and within +-1e75 (tolerances.h). Anything off is an error naming the line
+// (ASCII) or the element and instance (binary).
 //
-// Two more, found by fuzzing (tests/fuzz/regressions/mesh_loader): a header line holding a control
-// character such as a vertical tab ("end_header\v"), which assimp's line reader does not take for
-// whitespace, so it never finds end_header and loops forever or reads past its buffer (SEGV); and
-// a face with no corners, which reaches assimp's triangulation step and fails its assertion
-// (abort). Both are refused here.
+// The check was first written for assimp 5.2's PLY reader, which looped forever on a header
+// without end_header or with an element line lacking its count, aborted on a blank line inside
+// ASCII data or on a face with no corners, and read past its buffer on a control character in the
+// header (fuzz findings, tests/fuzz/regressions/mesh_loader/ply_*). Those rules stay: the files
+// are malformed whichever library reads them, and each still gets its line.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "adsd/error.h"
+#include "adsd/tolerances.h"
 #include "file_checks.h"
 #include "text_scan.h"
 
@@ -68,6 +70,11 @@ bool isIdentifier(std::string_view name) {
   const auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
   if (name.empty() || !letter(name.front())) return false;
   return std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9') || c == '-'; });
+}
+
+/// A vertex's position property, as the reader names it ("property x" and so on).
+bool isCoordinate(const Element& element, const std::string& what) {
+  return element.name == "vertex" && (what == "property x" || what == "property y" || what == "property z");
 }
 
 /// The face corner lists whose values are vertex indices.
@@ -200,6 +207,13 @@ class PlyChecker {
           if (!ok) {
             throw InputError(where(e, i) + ": " + quoteToken(t[k]) + " is not " +
                              (type.isInteger ? "an integer" : "a number"));
+          }
+          if (!type.isInteger && isCoordinate(e, what) &&
+              !(std::abs(number) <= tolerance::kMaxCoordinate)) {
+            throw InputError(where(e, i) + ": " + what + " is " + quoteToken(t[k]) +
+                             (std::isfinite(number) ? ", beyond +-1e75, where the distance computation's squared "
+                                                      "lengths would overflow"
+                                                    : ", a non-finite coordinate"));
           }
           ++k;
           return type.isInteger ? integer : 0;
