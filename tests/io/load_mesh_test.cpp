@@ -547,6 +547,10 @@ TEST(LoadMesh, SeventeenDigitCoordinatesRoundTripExactly) {
       dir.write("p.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
                          "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
                              v + "\n0 0 0\n1 0 0\n3 0 1 2\n"),
+      // ASCII text is read as written, whatever type the header declares.
+      dir.write("p_float.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                                   v + "\n0 0 0\n1 0 0\n3 0 1 2\n"),
       dir.write("p.stl", "solid p\nfacet normal 0 0 0\nouter loop\nvertex " + v +
                              "\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid p\n")};
   for (const std::string& file : files) {

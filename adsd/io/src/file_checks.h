@@ -5,6 +5,7 @@
 /// format has lines.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -30,9 +31,10 @@ bool isBinaryStl(std::string_view head);
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes);
 
 /// \brief PLY header and data walked; throws InputError "PATH:LINE: ..." (ASCII) or "PATH: ..."
-/// (binary) for what CGAL's PLY reader would refuse without a word, misread or accept although
-/// wrong (an index out of range), see ply_check.cpp.
-void requireConsistentPly(const std::string& path, std::string_view bytes);
+/// (binary) for anything malformed, including what CGAL's PLY reader would refuse without a word
+/// or accept although wrong (an index out of range), see ply_check.cpp. An ASCII file is read on
+/// the way and returned; a binary one is left to readPly (std::nullopt).
+std::optional<PolygonSoup> checkPly(const std::string& path, std::string_view bytes);
 
 /// \brief COLLADA: every `<p>` index list holds integers and whitespace only, up to its `</p>`;
 /// throws InputError "PATH:LINE: ..." otherwise (assimp would read such a list forever, growing
@@ -43,6 +45,6 @@ void requireIntegerIndexLists(const std::string& path, std::string_view text);
 PolygonSoup readObj(const std::string& path, std::string_view text);  ///< obj_reader.cpp
 PolygonSoup readOff(const std::string& path, std::string_view text);  ///< off_reader.cpp
 PolygonSoup readStl(const std::string& path, std::string_view bytes);  ///< stl_reader.cpp, after requireCompleteBinaryStl
-PolygonSoup readPly(const std::string& path);  ///< ply_reader.cpp (CGAL), after requireConsistentPly
+PolygonSoup readPly(const std::string& path);  ///< ply_reader.cpp (CGAL): binary PLY, after checkPly
 
 }  // namespace adsd::io::detail

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <limits>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -286,8 +287,8 @@ Mesh loadMeshUnguarded(const std::string& path) {
     return detail::meshFromSoup(detail::readStl(path, bytes), path);
   }
   if (ext == ".ply") {
-    detail::requireConsistentPly(path, detail::readWholeFile(path));
-    return detail::meshFromSoup(detail::readPly(path), path);
+    std::optional<detail::PolygonSoup> ascii = detail::checkPly(path, detail::readWholeFile(path));
+    return detail::meshFromSoup(ascii ? std::move(*ascii) : detail::readPly(path), path);
   }
   if (ext == ".dae") detail::requireIntegerIndexLists(path, detail::readWholeFile(path));
 

@@ -1,11 +1,12 @@
-// The structure check for PLY files, run before CGAL's PLY reader (ply_reader.cpp) reads them.
+// The PLY check, and the ASCII PLY reader. Binary PLY is then read by CGAL (ply_reader.cpp).
 //
 // CGAL's reader answers only "false" on a malformed file, and accepts a face index beyond the
 // vertex count. So the header is parsed here, the data is walked instance by instance (ASCII: one
 // instance per line, as PLY writers emit it; binary: record by record, list lengths included),
 // face indices are checked against the vertex count, and an ASCII coordinate (x, y, z of a vertex)
 // must be finite and within +-1e75 (tolerances.h). Anything off is an error naming the line
-// (ASCII) or the element and instance (binary).
+// (ASCII) or the element and instance (binary). An ASCII file's vertices and faces are kept on the
+// way: every number went through std::from_chars already, exactly.
 //
 // The check was first written for assimp 5.2's PLY reader, which looped forever on a header
 // without end_header or with an element line lacking its count, aborted on a blank line inside
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -72,11 +74,6 @@ bool isIdentifier(std::string_view name) {
   return std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9') || c == '-'; });
 }
 
-/// A vertex's position property, as the reader names it ("property x" and so on).
-bool isCoordinate(const Element& element, const std::string& what) {
-  return element.name == "vertex" && (what == "property x" || what == "property y" || what == "property z");
-}
-
 /// The face corner lists whose values are vertex indices.
 bool isVertexIndexList(const Element& element, const Property& property) {
   return element.name == "face" && property.isList &&
@@ -87,16 +84,18 @@ class PlyChecker {
  public:
   PlyChecker(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes), lines_(bytes) {}
 
-  void run() {
+  std::optional<PolygonSoup> run() {
     readHeader();
     for (const Element& e : elements_) {
       if (e.name == "vertex") vertexCount_ = e.count;
     }
-    if (format_ == Format::ascii) {
-      walkAscii();
-    } else {
+    if (vertexCount_ >= UINT32_MAX) throw InputError(path_ + ": more than 2^32 - 1 vertices");
+    if (format_ != Format::ascii) {
       walkBinary();
+      return std::nullopt;
     }
+    walkAscii();
+    return std::move(soup_);
   }
 
  private:
@@ -186,9 +185,24 @@ class PlyChecker {
     return prefix + e.name + " " + std::to_string(instance);
   }
 
+  /// Walks the ASCII data, one instance per line, and keeps what the mesh needs: each vertex's x,
+  /// y, z (every number through std::from_chars, correctly rounded, whatever type the header
+  /// declares, so 17 significant digits come back bit for bit) and each face's corner list.
   void walkAscii() {
     std::string_view line;
     for (const Element& e : elements_) {
+      const bool isVertex = e.name == "vertex";
+      int axisOf[3] = {-1, -1, -1};  // property index of x, y, z
+      for (std::size_t k = 0; isVertex && k < e.properties.size(); ++k) {
+        const std::string& name = e.properties[k].name;
+        if (!e.properties[k].isList && name.size() == 1 && name[0] >= 'x' && name[0] <= 'z') axisOf[name[0] - 'x'] = static_cast<int>(k);
+      }
+      if (isVertex && e.count > 0) {
+        for (int axis = 0; axis < 3; ++axis) {
+          if (axisOf[axis] < 0) throw InputError(path_ + ": the PLY vertex element has no property " + "xyz"[axis]);
+        }
+        soup_.points.reserve(static_cast<std::size_t>(e.count));
+      }
       for (long long i = 0; i < e.count; ++i) {
         if (!lines_.next(line)) {
           throw InputError(path_ + ": the file ends after " + std::to_string(i) + " of the " +
@@ -197,44 +211,58 @@ class PlyChecker {
         const std::vector<std::string_view> t = splitWhitespace(line);
         if (t.empty()) throw InputError(at() + "blank line inside the PLY data (one " + e.name + " per line)");
         std::size_t k = 0;
-        auto value = [&](const ScalarType& type, const std::string& what) -> long long {
+        // The next value, parsed as \p type; \p role names it in a message ("property", "list").
+        auto value = [&](const ScalarType& type, const Property& p, const char* role, double& number) -> long long {
           if (k >= t.size()) {
-            throw InputError(where(e, i) + ": the line ends before its " + what + " (one " + e.name + " per line)");
+            throw InputError(where(e, i) + ": the line ends before its " + role + " " + p.name + " (one " + e.name +
+                             " per line)");
           }
-          double number = 0.0;
           long long integer = 0;
           const bool ok = type.isInteger ? parseInteger(t[k], integer) : parseDouble(t[k], number);
           if (!ok) {
             throw InputError(where(e, i) + ": " + quoteToken(t[k]) + " is not " +
                              (type.isInteger ? "an integer" : "a number"));
           }
-          if (!type.isInteger && isCoordinate(e, what) &&
-              !(std::abs(number) <= tolerance::kMaxCoordinate)) {
-            throw InputError(where(e, i) + ": " + what + " is " + quoteToken(t[k]) +
-                             (std::isfinite(number) ? ", beyond +-1e75, where the distance computation's squared "
-                                                      "lengths would overflow"
-                                                    : ", a non-finite coordinate"));
-          }
+          if (type.isInteger) number = static_cast<double>(integer);
           ++k;
-          return type.isInteger ? integer : 0;
+          return integer;
         };
-        for (const Property& p : e.properties) {
+        Vec3 point = Vec3::Zero();
+        for (std::size_t q = 0; q < e.properties.size(); ++q) {
+          const Property& p = e.properties[q];
+          double number = 0.0;
           if (!p.isList) {
-            value(p.valueType, "property " + p.name);
+            value(p.valueType, p, "property", number);
+            for (int axis = 0; axis < 3; ++axis) {
+              if (axisOf[axis] != static_cast<int>(q)) continue;
+              if (!(std::abs(number) <= tolerance::kMaxCoordinate)) {
+                throw InputError(where(e, i) + ": property " + p.name + " is " + quoteToken(t[k - 1]) +
+                                 (std::isfinite(number) ? ", beyond +-1e75, where the distance computation's "
+                                                          "squared lengths would overflow"
+                                                        : ", a non-finite coordinate"));
+              }
+              point(axis) = number;
+            }
             continue;
           }
-          const long long n = value(p.countType, "length of list " + p.name);
+          const long long n = value(p.countType, p, "length of list", number);
           if (n < 0) throw InputError(where(e, i) + ": list " + p.name + " has negative length " + std::to_string(n));
           requireCorners(n, e, p, i);
+          const bool corners = isVertexIndexList(e, p) && p.valueType.isInteger;
           for (long long j = 0; j < n; ++j) {
-            const long long item = value(p.valueType, "list " + p.name);
-            if (isVertexIndexList(e, p)) checkIndex(item, e, i);
+            const long long item = value(p.valueType, p, "list", number);
+            if (corners) {
+              checkIndex(item, e, i);
+              soup_.addCorner(static_cast<std::uint32_t>(item));
+            }
           }
+          if (corners) soup_.closePolygon();
         }
         if (k != t.size()) {
           throw InputError(where(e, i) + ": " + std::to_string(t.size() - k) +
                            " values more than the header declares (one " + e.name + " per line)");
         }
+        if (isVertex) soup_.points.push_back(point);
       }
     }
   }
@@ -299,10 +327,13 @@ class PlyChecker {
   long long vertexCount_ = 0;
   std::size_t dataOffset_ = 0;
   std::size_t pos_ = 0;
+  PolygonSoup soup_;
 };
 
 }  // namespace
 
-void requireConsistentPly(const std::string& path, std::string_view bytes) { PlyChecker(path, bytes).run(); }
+std::optional<PolygonSoup> checkPly(const std::string& path, std::string_view bytes) {
+  return PlyChecker(path, bytes).run();
+}
 
 }  // namespace adsd::io::detail

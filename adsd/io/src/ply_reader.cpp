@@ -1,12 +1,13 @@
-// PLY through CGAL's polygon-soup reader: ASCII and both binary byte orders, float or double
-// vertex properties, read into double without loss (a float property becomes the double of the
-// same value; ASCII numbers are read by the C++ library's stream extraction, correctly rounded,
-// so 17 significant digits come back bit for bit). Measured against assimp (tests/io, docs/
-// numerics.md): exact where assimp rounds to float, and faster on the Stanford dragon.
+// Binary PLY through CGAL's polygon-soup reader: both byte orders, float or double vertex
+// properties, read into double without loss (a float property becomes the double of the same
+// value, a double property the double as stored). Measured against assimp on the Stanford dragon
+// written as binary PLY: exact where assimp rounds to float, and faster (docs/numerics.md).
 //
-// CGAL says only "false" when it cannot read a file, and it accepts a face index beyond the
-// vertex count; requireConsistentPly (ply_check.cpp) has walked the file first and named the line
-// of anything malformed, so a failure here is a file that check let through.
+// ASCII PLY is read by the check that walks the file first (ply_check.cpp): it parses every value
+// already, through std::from_chars, while CGAL's ASCII path parses a "float" property with strtof,
+// rounding the text to float, and took longer than assimp on the dragon. CGAL says only "false"
+// when it cannot read a file and accepts a face index beyond the vertex count; checkPly has named
+// the line or record of anything malformed before this runs.
 
 #include <vector>
 
