@@ -8,8 +8,6 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libassimp-dev
-  # CGAL's header-only PLY reader (adsd::io reads PLY into double through it; issue 16).
-  libcgal-dev
   libompl-dev ompl-demos
   # OMPL's CMake config names these libraries without depending on their -dev packages.
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev libboost-program-options-dev

@@ -205,6 +205,35 @@ TEST(LoadMesh, BinaryPlyBothByteOrders) {
   }
 }
 
+// A 16-bit index list, extra vertex and face properties, big-endian doubles: all read (CGAL's PLY
+// reader, measured for issue 16, reads only 32-bit index lists).
+TEST(LoadMesh, BinaryPlyWithShortIndexListsAndExtraProperties) {
+  TempDir dir;
+  std::string bytes =
+      "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+      "property double z\nproperty uchar red\nelement face 1\nproperty list uchar ushort vertex_index\n"
+      "property int flags\nend_header\n";
+  auto putBig = [&](std::uint64_t bits, int size) {
+    for (int i = size - 1; i >= 0; --i) bytes.push_back(static_cast<char>(bits >> (8 * i) & 0xff));
+  };
+  const double corners[3][3] = {{0.1, 0, 0}, {1, 0, 0}, {0, 1, 1e-300}};
+  for (const auto& corner : corners) {
+    for (const double c : corner) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      putBig(bits, 8);
+    }
+    putBig(200, 1);  // red
+  }
+  putBig(3, 1);
+  for (const std::uint64_t index : {0, 1, 2}) putBig(index, 2);
+  putBig(7, 4);  // flags
+  const Mesh mesh = loadMesh(dir.write("short.ply", bytes));
+  ASSERT_EQ(mesh.triangleCount(), 1u);
+  EXPECT_EQ(mesh.corner(0, 0).x(), 0.1);
+  EXPECT_EQ(mesh.corner(0, 2).z(), 1e-300);
+}
+
 TEST(LoadMesh, OffWithoutKeywordWithCommentsAndBlankLines) {
   TempDir dir;
   const Mesh mesh = loadMesh(dir.write("loose.off",

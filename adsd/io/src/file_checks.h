@@ -5,7 +5,6 @@
 /// format has lines.
 
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -30,12 +29,6 @@ bool isBinaryStl(std::string_view head);
 /// header promises (a cut-off download or copy is the usual cause, and the message says so).
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes);
 
-/// \brief PLY header and data walked; throws InputError "PATH:LINE: ..." (ASCII) or "PATH: ..."
-/// (binary) for anything malformed, including what CGAL's PLY reader would refuse without a word
-/// or accept although wrong (an index out of range), see ply_check.cpp. An ASCII file is read on
-/// the way and returned; a binary one is left to readPly (std::nullopt).
-std::optional<PolygonSoup> checkPly(const std::string& path, std::string_view bytes);
-
 /// \brief COLLADA: every `<p>` index list holds integers and whitespace only, up to its `</p>`;
 /// throws InputError "PATH:LINE: ..." otherwise (assimp would read such a list forever, growing
 /// it until memory runs out; see collada_check.cpp).
@@ -45,6 +38,6 @@ void requireIntegerIndexLists(const std::string& path, std::string_view text);
 PolygonSoup readObj(const std::string& path, std::string_view text);  ///< obj_reader.cpp
 PolygonSoup readOff(const std::string& path, std::string_view text);  ///< off_reader.cpp
 PolygonSoup readStl(const std::string& path, std::string_view bytes);  ///< stl_reader.cpp, after requireCompleteBinaryStl
-PolygonSoup readPly(const std::string& path);  ///< ply_reader.cpp (CGAL): binary PLY, after checkPly
+PolygonSoup readPly(const std::string& path, std::string_view bytes);  ///< ply_reader.cpp, ASCII and binary
 
 }  // namespace adsd::io::detail

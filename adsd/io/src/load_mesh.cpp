@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <limits>
 #include <new>
-#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -286,10 +285,7 @@ Mesh loadMeshUnguarded(const std::string& path) {
     detail::requireCompleteBinaryStl(path, bytes, bytes.size());
     return detail::meshFromSoup(detail::readStl(path, bytes), path);
   }
-  if (ext == ".ply") {
-    std::optional<detail::PolygonSoup> ascii = detail::checkPly(path, detail::readWholeFile(path));
-    return detail::meshFromSoup(ascii ? std::move(*ascii) : detail::readPly(path), path);
-  }
+  if (ext == ".ply") return detail::meshFromSoup(detail::readPly(path, detail::readWholeFile(path)), path);
   if (ext == ".dae") detail::requireIntegerIndexLists(path, detail::readWholeFile(path));
 
   Assimp::Importer importer;

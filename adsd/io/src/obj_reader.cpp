@@ -1,8 +1,8 @@
 // Wavefront OBJ, read line by line into double.
 //
 // Why not a library: of the candidates, tinyobjloader (Debian builds it with double) parses
-// numbers with its own routine, which is not correctly rounded (about half of 18 000
-// 17-digit coordinates came back a few ulps off), and CGAL's OBJ reader refuses files with line
+// numbers with its own routine, which is not correctly rounded (17-digit coordinates came
+// back a few ulps off), and CGAL's OBJ reader refuses files with line
 // elements ("l"), reads only the first corner of a face whose corners are separated by tabs, and
 // says nothing but "false" on a bad file. Here every number goes through std::from_chars, which
 // rounds correctly, and a bad line is reported with its number.

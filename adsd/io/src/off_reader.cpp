@@ -1,8 +1,8 @@
 // OFF, read line by line into double.
 //
 // Why not a library: CGAL's OFF scanner (the one exact candidate; OpenMesh rounds to float) is
-// exact but took about twice assimp's time on the largest real model, bunny00.off, and says
-// nothing but "false" on a bad file, while a malformed file must be reported with its line. The
+// exact but slower than assimp on the largest real model, bunny00.off (docs/numerics.md), and
+// says nothing but "false" on a bad file, while a malformed file must be reported with its line. The
 // format is a header and two lists of numbers, and every number goes through std::from_chars,
 // which rounds correctly: a coordinate written with 17 significant digits comes back bit for bit.
 //

@@ -14,7 +14,7 @@ namespace adsd::io {
 /// Precision, by format (the extension decides; docs/numerics.md has the measurement):
 /// - OBJ, OFF, ASCII PLY, ASCII STL: every coordinate as the double nearest its decimal text
 ///   (std::from_chars), so 17 significant digits come back bit for bit; binary PLY with double
-///   properties: the doubles as stored (read by CGAL).
+///   properties: the doubles as stored.
 /// - binary STL, binary PLY with float properties: the file's float32 values, exactly.
 /// - anything else (COLLADA .dae, glTF, 3DS, ...): through assimp, which stores coordinates in
 ///   float; node transforms are composed in double from assimp's float matrices. COLLADA <unit>
