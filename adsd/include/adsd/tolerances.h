@@ -55,8 +55,8 @@ inline constexpr double kMaxCoordinate = 1e75;
 /// d stretches lengths by up to about d, i.e. an error of d x |p| at a point p of the mesh frame,
 /// which must stay below the 1e-10 x diagonal we promise. Rotations built in double from a unit
 /// quaternion or an angle-axis pair are within a few 1e-16; a pose rounded to float (about 1e-7)
-/// or carrying a scale or a shear is refused (the tree path answered 1.48519 instead of 1.43264
-/// for a shear before this check; tests/io's pose tests pin the refusal).
+/// or carrying a scale or a shear is refused (a shear was answered wrongly by the tree path before
+/// this check, issue 16; tests/stress/input_boundary_test.cpp pins the refusal).
 inline constexpr double kPoseOrthonormality = 1e-10;
 
 /// GJK: iteration cap. Polytope GJK converges in far fewer steps in practice; the cap only
