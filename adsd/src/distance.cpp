@@ -9,6 +9,7 @@
 
 #include "adsd/error.h"
 #include "adsd/triangle_distance.h"
+#include "input_checks.h"
 #include "query.h"
 #include "triangle_separation.h"
 
@@ -35,8 +36,8 @@ namespace detail {
 namespace {
 
 void validate(const DistanceOptions& o, const Pose& poseA, const Pose& poseB) {
-  if (!poseA.matrix().allFinite()) throw InputError("distance query: pose of mesh A has a non-finite entry");
-  if (!poseB.matrix().allFinite()) throw InputError("distance query: pose of mesh B has a non-finite entry");
+  requireRigidPose(poseA, "A");
+  requireRigidPose(poseB, "B");
   switch (o.mode) {
     case QueryMode::exact: break;
     case QueryMode::tolerance:

@@ -1,19 +1,35 @@
 #include "adsd/mesh.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "adsd/error.h"
 #include "adsd/mesh_hierarchy.h"
+#include "adsd/tolerances.h"
 
 namespace adsd {
 
 namespace {
 
-void requireFinite(const std::vector<Vec3>& vertices, const std::string& name) {
+/// Finite, and within tolerance::kMaxCoordinate: beyond it the core's squared quantities overflow
+/// and a query would answer inf with status exact (tolerances.h says why that bound).
+void requireRepresentable(const std::vector<Vec3>& vertices, const std::string& name) {
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    if (!vertices[i].allFinite()) {
-      throw InputError(name + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+    const Vec3& v = vertices[i];
+    if (!v.allFinite()) throw InputError(name + ": vertex " + std::to_string(i) + " has a non-finite coordinate");
+    Eigen::Index axis = 0;
+    if (v.cwiseAbs().maxCoeff(&axis) > tolerance::kMaxCoordinate) {
+      // Shortest text that reads back as the same double: the coordinate as the user wrote it.
+      char text[32];
+      const std::string coordinate(text, std::to_chars(text, text + sizeof text, v(axis)).ptr);
+      std::ostringstream what;
+      what << name << ": vertex " << i << " has coordinate " << "xyz"[axis] << " = " << coordinate << ", beyond +-"
+           << std::setprecision(3) << tolerance::kMaxCoordinate
+           << ", where the distance computation's squared lengths would overflow";
+      throw InputError(what.str());
     }
   }
 }
@@ -24,7 +40,7 @@ Mesh::Mesh(std::vector<Vec3> vertices, std::vector<TriangleIndices> triangles, s
     : vertices_(std::move(vertices)), triangles_(std::move(triangles)), name_(std::move(name)) {
   if (triangles_.empty()) throw InputError(name_ + ": the mesh has no triangles");
   if (triangles_.size() > UINT32_MAX) throw InputError(name_ + ": more than 2^32 - 1 triangles");
-  requireFinite(vertices_, name_);
+  requireRepresentable(vertices_, name_);
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
       if (triangles_[t][k] >= vertices_.size()) {
@@ -52,7 +68,7 @@ void Mesh::setVertices(const std::vector<Vec3>& vertices) {
     throw InputError(name_ + ": setVertices got " + std::to_string(vertices.size()) +
                      " vertices, the mesh has " + std::to_string(vertices_.size()));
   }
-  requireFinite(vertices, name_);
+  requireRepresentable(vertices, name_);
   vertices_ = vertices;
   refreshVertexFacts();
   if (hierarchy_) {

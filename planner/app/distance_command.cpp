@@ -1,8 +1,8 @@
 // `adsd distance MESH_A MESH_B [--poses FILE|-] [--csv] [--abs-tol X] [--rel-tol X]
 //                [--threshold D] [--cap D] [--path auto|tree|scratch]`
 //
-// The distance between two mesh files (any format assimp reads; node transforms applied, only
-// triangles kept). Without --poses both meshes stay at identity and a readable summary is printed;
+// The distance between two mesh files (OBJ, OFF, PLY, STL read in double; any other format assimp
+// reads, in float; node transforms applied, only triangles kept). Without --poses both meshes stay at identity and a readable summary is printed;
 // with --poses every line of the pose file is one query. Everything is read and checked before
 // the first query runs, and the output is written only once all queries are done, so that bad
 // input leaves one line on stderr, exit status 2, and nothing on stdout. Many poses of the same
@@ -37,8 +37,8 @@ constexpr const char* kSynopsis =
     "                     [--threshold D] [--cap D] [--path auto|tree|scratch]";
 
 constexpr const char* kDescription =
-    "Minimum distance between two triangle meshes (any file assimp reads: OBJ, STL, PLY, OFF,\n"
-    "COLLADA, ...; scene node transforms are applied and only triangles are kept).";
+    "Minimum distance between two triangle meshes (OBJ, OFF, PLY, STL, and any other file assimp\n"
+    "reads: COLLADA, glTF, 3DS, ...; scene node transforms are applied and only triangles kept).";
 
 constexpr const char* kDetails =
     "Without --poses both meshes are at identity and a readable summary is printed. With --poses,\n"
@@ -49,6 +49,15 @@ constexpr const char* kDetails =
     "Query mode: exact by default; --abs-tol/--rel-tol (together or alone) return an interval\n"
     "[lower, upper] within the tolerance; --threshold D only decides whether the distance exceeds\n"
     "D; --cap D reports distances beyond D as '>= D'. Give at most one mode.\n"
+    "\n"
+    "Precision of the mesh files, by extension:\n"
+    "  .obj .off, ASCII .ply and .stl   every coordinate as the double nearest its text: 17\n"
+    "                                   significant digits read back bit for bit\n"
+    "  binary .ply, double properties   the doubles as stored\n"
+    "  binary .ply, float properties    float32 as stored (about 7 digits)\n"
+    "  binary .stl                      float32 as stored (the format has nothing else)\n"
+    "  .dae and the rest (via assimp)   float32: assimp stores coordinates in float\n"
+    "Coordinates and pose translations beyond +-1e75 are refused (squared lengths would overflow).\n"
     "\n"
     "CSV columns: distance,lower,upper,status,ax,ay,az,bx,by,bz,micros, then line (the pose-file\n"
     "line, 0 without --poses), triangle_a, triangle_b and the query's counters. Witness fields\n"
@@ -291,7 +300,14 @@ int runDistance(const std::vector<std::string>& args) {
     Query q;
     q.line = p.line;
     const auto start = std::chrono::steady_clock::now();
-    q.result = distance(meshA, p.a, meshB, p.b, a.options, scratch);
+    try {
+      q.result = distance(meshA, p.a, meshB, p.b, a.options, scratch);
+    } catch (const InputError& e) {
+      // A pose the core refuses (a translation beyond 1e75, say): name the pose file's line too.
+      if (!a.poses) throw;
+      throw InputError((*a.poses == "-" ? std::string("stdin") : *a.poses) + ":" + std::to_string(p.line) + ": " +
+                       e.what());
+    }
     q.micros = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     queries.push_back(q);
   }

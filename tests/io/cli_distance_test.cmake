@@ -85,6 +85,9 @@ file(WRITE "${WORK_DIR}/poses13.txt"
   "0 0 0 1 0 0 0   3 0 0 1 0 0 0\n# comment\n0 0 0 1 0 0 0   3 0 0 1 0 0\n")
 file(WRITE "${WORK_DIR}/poses_norm.txt" "0 0 0 1 0 0 0   3 0 0 1.2 0 0 0\n")
 file(WRITE "${WORK_DIR}/poses_empty.txt" "# nothing here\n\n")
+# Issue 16: a translation beyond 1e75 (squared lengths would overflow), and a coordinate beyond it.
+file(WRITE "${WORK_DIR}/poses_far.txt" "0 0 0 1 0 0 0   3 0 0 1 0 0 0\n0 0 0 1 0 0 0   0 -2e80 0 1 0 0 0\n")
+file(WRITE "${WORK_DIR}/far.off" "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e155 0\n3 0 1 2\n")
 
 # ---- the program and its commands ----------------------------------------------------------------
 
@@ -206,7 +209,7 @@ expect_contains("${ERR}" "empty.stl: the file is empty" "empty mesh file")
 expect_bad_input(distance wire.obj cube.obj)
 expect_contains("${ERR}" "wire.obj: the file holds no triangles" "lines only")
 expect_bad_input(distance cube.obj nan.obj)
-expect_contains("${ERR}" "nan.obj: " "NaN coordinate")
+expect_contains("${ERR}" "nan.obj:2: " "NaN coordinate")
 expect_contains("${ERR}" "non-finite" "NaN coordinate")
 expect_bad_input(distance range.off cube.obj)
 expect_contains("${ERR}" "range.off:6: face 0 refers to vertex 7" "index out of range")
@@ -217,6 +220,10 @@ expect_bad_input(distance cube.obj cube.obj --poses - STDIN "${WORK_DIR}/poses13
 expect_contains("${ERR}" "stdin:3: expected 14 numbers" "13 numbers on stdin")
 expect_bad_input(distance cube.obj cube.obj --poses poses_norm.txt)
 expect_contains("${ERR}" "poses_norm.txt:1: quaternion of mesh B has norm 1.2" "non-unit quaternion")
+expect_bad_input(distance cube.obj cube.obj --poses poses_far.txt --csv)
+expect_contains("${ERR}" "poses_far.txt:2: distance query: pose of mesh B has a translation entry of 2e+80" "far pose")
+expect_bad_input(distance cube.obj far.off)
+expect_contains("${ERR}" "far.off:5: vertex 2: coordinate 1e+155 is beyond +-1e75" "far coordinate")
 expect_bad_input(distance cube.obj cube.obj --poses poses_empty.txt)
 expect_contains("${ERR}" "poses_empty.txt: no poses" "empty pose file")
 expect_bad_input(distance cube.obj cube.obj --poses no_such_poses.txt)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -23,7 +24,8 @@ namespace {
 
 using test::TempDir;
 
-// Assimp stores coordinates in float: 1e-6 is a few float ulps at the unit scale of these files.
+// COLLADA goes through assimp, which stores coordinates in float: 1e-6 is a few float ulps at the
+// unit scale of these files (OBJ, OFF, PLY and STL are read exactly; the exact tests are below).
 constexpr double kFloatTolerance = 1e-6;
 
 const char* const kCubeObj =
@@ -204,6 +206,35 @@ TEST(LoadMesh, BinaryPlyBothByteOrders) {
   }
 }
 
+// A 16-bit index list, extra vertex and face properties, big-endian doubles: all read (CGAL's PLY
+// reader, measured for issue 16, reads only 32-bit index lists).
+TEST(LoadMesh, BinaryPlyWithShortIndexListsAndExtraProperties) {
+  TempDir dir;
+  std::string bytes =
+      "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+      "property double z\nproperty uchar red\nelement face 1\nproperty list uchar ushort vertex_index\n"
+      "property int flags\nend_header\n";
+  auto putBig = [&](std::uint64_t bits, int size) {
+    for (int i = size - 1; i >= 0; --i) bytes.push_back(static_cast<char>(bits >> (8 * i) & 0xff));
+  };
+  const double corners[3][3] = {{0.1, 0, 0}, {1, 0, 0}, {0, 1, 1e-300}};
+  for (const auto& corner : corners) {
+    for (const double c : corner) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      putBig(bits, 8);
+    }
+    putBig(200, 1);  // red
+  }
+  putBig(3, 1);
+  for (const std::uint64_t index : {0, 1, 2}) putBig(index, 2);
+  putBig(7, 4);  // flags
+  const Mesh mesh = loadMesh(dir.write("short.ply", bytes));
+  ASSERT_EQ(mesh.triangleCount(), 1u);
+  EXPECT_EQ(mesh.corner(0, 0).x(), 0.1);
+  EXPECT_EQ(mesh.corner(0, 2).z(), 1e-300);
+}
+
 TEST(LoadMesh, OffWithoutKeywordWithCommentsAndBlankLines) {
   TempDir dir;
   const Mesh mesh = loadMesh(dir.write("loose.off",
@@ -281,6 +312,35 @@ TEST(LoadMesh, ZeroAreaTrianglesAreValid) {
   TempDir dir;
   const Mesh mesh = loadMesh(dir.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"));
   EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
+// Issue 16: the real models (problems/data/fetch_meshes.sh; not committed, so skipped where they
+// were not fetched) load with the triangle and vertex counts assimp gave them before the OBJ, OFF,
+// PLY and STL readers replaced it: shared corners and dropped unreferenced vertices as before.
+TEST(LoadMesh, RealModelsKeepTheCountsAssimpGaveThem) {
+  struct Known {
+    const char* file;
+    std::size_t triangles, vertices;
+  };
+  const Known known[] = {{"armadillo.off", 52000, 26002}, {"bear.off", 27648, 13826},   {"bunny.off", 3674, 1839},
+                         {"bunny00.off", 75408, 37706},   {"camel.off", 19536, 9770},   {"cow.off", 5804, 2903},
+                         {"dragon_res3.ply", 47794, 22982}, {"dragon_res4.ply", 11102, 5203},
+                         {"elephant.off", 5558, 2775},    {"knot.off", 4160, 2080},     {"man.off", 34986, 17495}};
+  const char* dataDir = std::getenv("ADSD_DATA_DIR");
+  const char* home = std::getenv("HOME");
+  const std::filesystem::path dir = dataDir != nullptr ? std::filesystem::path(dataDir)
+                                    : home != nullptr  ? std::filesystem::path(home) / ".cache/adsd/meshes"
+                                                       : std::filesystem::path();
+  int loaded = 0;
+  for (const Known& k : known) {
+    const std::filesystem::path file = dir / k.file;
+    if (!std::filesystem::exists(file)) continue;
+    const Mesh mesh = loadMesh(file.string());
+    EXPECT_EQ(mesh.triangleCount(), k.triangles) << k.file;
+    EXPECT_EQ(mesh.vertices().size(), k.vertices) << k.file;
+    ++loaded;
+  }
+  if (loaded == 0) GTEST_SKIP() << "no real models in " << dir << ": run problems/data/fetch_meshes.sh";
 }
 
 // ---- The bad-input catalogue: each case throws InputError naming the file, in one line. ----
@@ -464,24 +524,100 @@ TEST(LoadMeshBadInput, TruncatedBinaryPly) {
   EXPECT_NE(range.find("face 0 refers to vertex 3 but the file has 3 vertices"), std::string::npos) << range;
 }
 
-// Files assimp 5.2's OFF reader would silently repair (clamp, drop, or zero-fill).
-TEST(LoadMeshBadInput, OffThatAssimpWouldSilentlyRepair) {
+// OFF files that are malformed: each named with its line. (Assimp 5.2's OFF reader, used before
+// issue 16, clamped out-of-range indices and zero-filled missing vertices without a word.)
+TEST(LoadMeshBadInput, MalformedOff) {
   TempDir dir;
   const std::string range = loadError(dir.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"));
   EXPECT_NE(range.find("range.off:6: face 0 refers to vertex 7 but the file has 3 vertices"), std::string::npos)
       << range;
   const std::string missing = loadError(dir.write("few.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
-  // The face line is read as the fourth vertex, as assimp would; then the face is missing.
+  // The face line is read as the fourth vertex (extra values after x y z are allowed); then the face is missing.
   EXPECT_NE(missing.find("few.off: the OFF header promises 1 face but the file ends after 0"), std::string::npos)
       << missing;
-  const std::string big = loadError(dir.write("big.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n10 0 1 2 0 1 2 0 1 2 0\n"));
-  EXPECT_NE(big.find("big.off:6: face 0 has 10 corners"), std::string::npos) << big;
-  const std::string comment = loadError(dir.write("comment.off", "OFF\n3 1 0\n0 0 0\n# here\n1 0 0\n0 1 0\n3 0 1 2\n"));
-  EXPECT_NE(comment.find("comment.off:4: vertex 1"), std::string::npos) << comment;
+  const std::string word = loadError(dir.write("word.off", "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(word.find("word.off:4: vertex 1: expected 3 coordinates"), std::string::npos) << word;
   const std::string faces = loadError(dir.write("faces.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_NE(faces.find("promises 2 faces but the file ends after 1"), std::string::npos) << faces;
   const std::string none = loadError(dir.write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"));
   EXPECT_NE(none.find("no triangles"), std::string::npos) << none;
+  const std::string far = loadError(dir.write("far.off", "OFF\n3 1 0\n0 0 0\n1e80 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(far.find("far.off:4: vertex 1: coordinate 1e+80 is beyond +-1e75"), std::string::npos) << far;
+  const std::string binary = loadError(dir.write("binary.off", "OFF BINARY\n"));
+  EXPECT_NE(binary.find("binary.off:1: binary OFF is not read"), std::string::npos) << binary;
+}
+
+// What assimp's OFF reader refused or misread is read as the format means it: a polygon of ten
+// corners (assimp dropped faces of more than nine) and a comment between vertices (assimp read
+// it as a vertex).
+TEST(LoadMesh, OffPolygonsOfManyCornersAndCommentsInsideTheData) {
+  TempDir dir;
+  const Mesh decagon = loadMesh(dir.write("big.off",
+                                          "OFF\n10 1 0\n1 0 0\n0.8 0.6 0\n0.3 0.95 0\n-0.3 0.95 0\n-0.8 0.6 0\n"
+                                          "-1 0 0\n-0.8 -0.6 0\n-0.3 -0.95 0\n0.3 -0.95 0\n0.8 -0.6 0\n"
+                                          "10 0 1 2 3 4 5 6 7 8 9\n"));
+  EXPECT_EQ(decagon.triangleCount(), 8u);
+  const Mesh commented = loadMesh(dir.write("comment.off", "OFF\n3 1 0\n0 0 0\n# here\n1 0 0\n0 1 0 # there\n3 0 1 2\n"));
+  EXPECT_EQ(commented.triangleCount(), 1u);
+  expectBounds(commented, Vec3(0, 0, 0), Vec3(1, 1, 0));
+}
+
+// OBJ, ASCII STL and ASCII PLY: a malformed line is named (assimp said "cannot be parsed" or
+// repaired the file; CGAL's readers, measured for issue 16, say only "false").
+TEST(LoadMeshBadInput, MalformedObjStlAndPlyNameTheLine) {
+  TempDir dir;
+  const std::string word = loadError(dir.write("word.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_NE(word.find("word.obj:2: vertex 2: expected 3 coordinates"), std::string::npos) << word;
+  const std::string range = loadError(dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 9\n"));
+  EXPECT_NE(range.find("range.obj:5: face refers to vertex 9 but the file has 3 vertices"), std::string::npos) << range;
+  const std::string back = loadError(dir.write("back.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n"));
+  EXPECT_NE(back.find("back.obj:3: face corner '-3' counts back past the first vertex"), std::string::npos) << back;
+  const std::string zero = loadError(dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
+  EXPECT_NE(zero.find("zero.obj:4: face corner '0'"), std::string::npos) << zero;
+  const std::string far = loadError(dir.write("far.obj", "v 0 0 0\nv 1 0 0\nv 0 -2e75 0\nf 1 2 3\n"));
+  EXPECT_NE(far.find("far.obj:3: vertex 3: coordinate -2e+75 is beyond +-1e75"), std::string::npos) << far;
+  const std::string stl = loadError(dir.write("short.stl",
+                                              "solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\n"
+                                              "vertex 0 1 0\nendloop\nendfacet\nendsolid a\n"));
+  EXPECT_NE(stl.find("short.stl:6: expected a number (vertex coordinate), got 'vertex'"), std::string::npos) << stl;
+  const std::string open = loadError(dir.write("open.stl", "solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                                           "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"));
+  EXPECT_NE(open.find("open.stl: the file ends inside a solid"), std::string::npos) << open;
+  const std::string nan = loadError(dir.write("nan.ply",
+                                              "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                                              "property double y\nproperty double z\nelement face 1\n"
+                                              "property list uchar int vertex_indices\nend_header\n"
+                                              "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(nan.find("nan.ply:11: vertex 1: property y is 'nan', a non-finite coordinate"), std::string::npos) << nan;
+}
+
+// Issue 16: 17 significant digits in an ASCII file come back bit for bit (assimp rounded them to
+// float), in every text format; tests/stress/file_formats_test.cpp runs the numerics families.
+TEST(LoadMesh, SeventeenDigitCoordinatesRoundTripExactly) {
+  TempDir dir;
+  const char* x = "1000000.0000000001";  // 1e6 + 1e-10: the double 1000000.0000000001164...
+  const char* y = "-2.2250738585072014e-308";
+  const char* z = "0.10000000000000001";
+  const Vec3 want(1000000.0000000001, -2.2250738585072014e-308, 0.10000000000000001);
+  const std::string v = std::string(x) + " " + y + " " + z;
+  const std::vector<std::string> files = {
+      dir.write("p.obj", "v " + v + "\nv 0 0 0\nv 1 0 0\nf 1 2 3\n"),
+      dir.write("p.off", "OFF\n3 1 0\n" + v + "\n0 0 0\n1 0 0\n3 0 1 2\n"),
+      dir.write("p.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                         "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                             v + "\n0 0 0\n1 0 0\n3 0 1 2\n"),
+      // ASCII text is read as written, whatever type the header declares.
+      dir.write("p_float.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                                   v + "\n0 0 0\n1 0 0\n3 0 1 2\n"),
+      dir.write("p.stl", "solid p\nfacet normal 0 0 0\nouter loop\nvertex " + v +
+                             "\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid p\n")};
+  for (const std::string& file : files) {
+    const Mesh mesh = loadMesh(file);
+    EXPECT_EQ(mesh.corner(0, 0).x(), want.x()) << file;
+    EXPECT_EQ(mesh.corner(0, 0).y(), want.y()) << file;
+    EXPECT_EQ(mesh.corner(0, 0).z(), want.z()) << file;
+  }
 }
 
 }  // namespace

@@ -85,7 +85,7 @@ file(WRITE "${WORK_DIR}/inf_robot.obj" "v 0 0 0\nv 0.1 0 0\nv -inf 0.1 0\nf 1 2 
 # ---- adsd distance: the mesh entries cli_distance lacks --------------------------------------------
 
 expect_bad_input(NEEDLES "truncated.stl: " "truncated binary STL" ARGS distance robot.obj truncated.stl)
-expect_bad_input(NEEDLES "inf.obj: " "non-finite" ARGS distance inf.obj robot.obj --csv)
+expect_bad_input(NEEDLES "inf.obj:2: " "non-finite" ARGS distance inf.obj robot.obj --csv)
 expect_bad_input(NEEDLES "vertices_only.obj: " ARGS distance robot.obj vertices_only.obj)
 expect_bad_input(NEEDLES "points.obj: " "no triangles" ARGS distance points.obj robot.obj)
 expect_bad_input(NEEDLES "no_faces.off: " ARGS distance robot.obj no_faces.off)

@@ -144,7 +144,9 @@ class DistanceScratch {
 ///
 /// Thread-safe for concurrent calls on the same meshes with distinct scratch objects. Throws
 /// InputError for invalid options (negative tolerance, non-finite threshold, non-positive cap) or
-/// a pose with non-finite entries.
+/// a pose that is not rigid (non-finite entries, a rotation part not orthonormal within
+/// tolerance::kPoseOrthonormality, a bottom row other than 0 0 0 1) or whose translation exceeds
+/// tolerance::kMaxCoordinate.
 DistanceResult distance(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
                         const DistanceOptions& options, DistanceScratch& scratch);
 

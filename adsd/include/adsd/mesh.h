@@ -24,7 +24,8 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 
 /// \brief A triangle soup with shared vertices: open or closed, convex or not, manifold or not.
 ///
-/// The mesh is validated once on construction (finite coordinates, indices in range, at least one
+/// The mesh is validated once on construction (finite coordinates within +-tolerance::kMaxCoordinate,
+/// 1e75, beyond which the core's squared lengths would overflow; indices in range; at least one
 /// triangle) and then only read by queries, so any number of threads may query it at once.
 /// Zero-area triangles and repeated vertices are valid. No acceleration structure is built: the
 /// paper's algorithm needs none (sec. 1), which is what makes deforming meshes cheap.
@@ -36,7 +37,7 @@ class Mesh {
 
   /// \brief Deforming meshes: new positions for the same vertices (same count, same triangles).
   /// Not thread-safe against concurrent queries of this mesh. Throws InputError on a non-finite
-  /// coordinate or a count mismatch, leaving the mesh unchanged. A hierarchy, if built, is refit.
+  /// coordinate, one beyond +-tolerance::kMaxCoordinate, or a count mismatch, leaving the mesh unchanged. A hierarchy, if built, is refit.
   void setVertices(const std::vector<Vec3>& vertices);
 
   /// \brief Rigid meshes queried many times: builds the sub-mesh tree that queries then reuse

@@ -38,6 +38,27 @@ inline constexpr double kDegenerateArea2 = 1e-30;
 /// stress families).
 inline constexpr double kBoundSafetyUlps = 64.0;
 
+/// Input range: the largest |coordinate| a Mesh accepts (mesh frame, length units) and the largest
+/// |translation| entry a pose may carry. The highest power of a length that the core forms is the
+/// fourth: |e1 x e2|^2 of two edges or of two difference vectors (the triangle routine's degenerate
+/// and parallel tests, the signed volumes' face normals). In mesh A's frame, where the query works,
+/// A's vertices lie within sqrt(3) x 1e75 of the origin and B's within
+/// sqrt(3) x 1e75 + |t_B - t_A| <= 3 sqrt(3) x 1e75, so a difference is below 7e75 and its fourth
+/// power below 2.5e303: more than 1e4 below DBL_MAX (1.8e308), room for the sums and small factors
+/// around it. Above this, squared distances overflow and a query would answer inf
+/// or NaN with status exact, so Mesh and distance() refuse such input with an InputError instead.
+/// No real model comes near it: it is a bound on units and offsets gone wrong, not on scenes.
+inline constexpr double kMaxCoordinate = 1e75;
+
+/// Poses: the rotation part R of a pose must satisfy |(R^T R - I)_ij| <= this for every entry
+/// (dimensionless). The core inverts R by its transpose and moves mesh B by it; a rotation off by
+/// d stretches lengths by up to about d, i.e. an error of d x |p| at a point p of the mesh frame,
+/// which must stay below the 1e-10 x diagonal we promise. Rotations built in double from a unit
+/// quaternion or an angle-axis pair are within a few 1e-16; a pose rounded to float (about 1e-7)
+/// or carrying a scale or a shear is refused (a shear was answered wrongly by the tree path before
+/// this check, issue 16; tests/stress/input_boundary_test.cpp pins the refusal).
+inline constexpr double kPoseOrthonormality = 1e-10;
+
 /// GJK: iteration cap. Polytope GJK converges in far fewer steps in practice; the cap only
 /// guarantees termination. Hitting it is harmless here: an unproven separation is split (sec. 6).
 inline constexpr int kGjkMaxIterations = 64;

@@ -24,13 +24,6 @@ constexpr std::uintmax_t kStlBytesPerTriangle = 50;
 // How much of the file decides "ASCII or binary": enough to pass the header and the first facets.
 constexpr std::size_t kStlSniffBytes = 512;
 
-std::string lowerCaseExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 bool startsWithSolid(std::string_view head) {
   std::size_t i = 0;
   while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
@@ -85,13 +78,18 @@ std::uintmax_t requireReadableFile(const std::string& path) {
 // ASCII STL starts with "solid" and is text. A binary STL may also start with "solid" (some
 // exporters write it into the free-form header), but its triangle count (whose high bytes are zero
 // below 2^24 triangles) and float data put control bytes within the first few hundred bytes.
-// Assimp 5.2 reads a binary STL only if its size is exactly 84 + 50 * count; anything else it
-// calls "failed to determine STL storage representation", so each case gets its own message.
+// A binary STL is read only at exactly 84 + 50 * count bytes (a longer file is as likely a
+// corrupt one as one with trailing junk); each way of missing that gets its own message.
+bool isBinaryStl(std::string_view head) {
+  head = head.substr(0, kStlSniffBytes);
+  return !startsWithSolid(head) || firstControlByte(head) != std::string_view::npos;
+}
+
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes) {
   head = head.substr(0, kStlSniffBytes);
   const bool solid = startsWithSolid(head);
   const std::size_t control = firstControlByte(head);
-  if (solid && control == std::string_view::npos) return;  // ASCII STL: assimp's parser reports its errors
+  if (!isBinaryStl(head)) return;  // ASCII STL: its reader reports its errors, with lines
 
   const std::string what = solid ? path + ": neither ASCII STL (byte " + std::to_string(control) +
                                        " is a control character) nor a complete binary STL: "
@@ -114,17 +112,12 @@ void requireCompleteBinaryStl(const std::string& path, std::string_view head, st
   if (sizeInBytes > needed) {
     throw InputError(what + "binary STL with " + std::to_string(sizeInBytes - needed) +
                      " bytes after the " + std::to_string(promised) +
-                     " triangles its header promises (assimp reads binary STL only at the exact size)");
+                     " triangles its header promises (a binary STL is read only at its exact size)");
   }
 }
 
-void checkBeforeAssimp(const std::string& path) {
-  const std::uintmax_t size = requireReadableFile(path);
-  const std::string ext = lowerCaseExtension(path);
-  if (ext == ".stl") requireCompleteBinaryStl(path, readFile(path, std::min<std::uintmax_t>(size, kStlSniffBytes)), size);
-  if (ext == ".off") requireConsistentOff(path, readFile(path, size));
-  if (ext == ".ply") requireConsistentPly(path, readFile(path, size));
-  if (ext == ".dae") requireIntegerIndexLists(path, readFile(path, size));
+std::string readWholeFile(const std::string& path) {
+  return readFile(path, requireReadableFile(path));
 }
 
 }  // namespace adsd::io::detail

@@ -1,41 +1,43 @@
 #pragma once
 /// \file
-/// \brief Checks on a mesh file made before assimp sees it: the commonest bad inputs get a precise
-/// message instead of a parser's guess, and the inputs on which assimp 5.2 would hang, abort or
-/// silently repair the data are stopped here.
+/// \brief The mesh readers of adsd::io (one per format read without assimp) and the checks on a
+/// file made before a reader or assimp sees it: each names the file, and the line where the
+/// format has lines.
 
 #include <cstdint>
 #include <string>
 #include <string_view>
 
-namespace adsd::io::detail {
+#include "polygon_soup.h"
 
-/// \brief Everything below that applies to \p path (by its extension); throws InputError.
-void checkBeforeAssimp(const std::string& path);
+namespace adsd::io::detail {
 
 /// \brief Returns the size in bytes of \p path; throws InputError "PATH: ..." unless it is an
 /// existing, regular, readable, non-empty file.
 std::uintmax_t requireReadableFile(const std::string& path);
 
-/// \brief For STL that is not ASCII (judged from \p head, the first bytes of the file): throws
-/// InputError "PATH: ..." when the file is shorter than its 84-byte header or than the 50 bytes per
-/// triangle the header promises.
-///
-/// Assimp only says "failed to determine STL storage representation" for such a file; a cut-off
-/// download or copy is the usual cause, and the message should say so.
+/// \brief The whole file, after requireReadableFile.
+std::string readWholeFile(const std::string& path);
+
+/// \brief Whether an STL file whose first bytes are \p head is binary: it does not start with
+/// "solid", or it does but has control bytes in its first 512 (some exporters write "solid" into
+/// the free-form header of a binary file, whose count and floats then show control bytes).
+bool isBinaryStl(std::string_view head);
+
+/// \brief For binary STL (judged from \p head, the first bytes of the file): throws InputError
+/// "PATH: ..." when the file is not exactly its 84-byte header plus the 50 bytes per triangle the
+/// header promises (a cut-off download or copy is the usual cause, and the message says so).
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes);
-
-/// \brief OFF read the way assimp reads it; throws InputError "PATH:LINE: ..." for anything its
-/// reader would silently repair (see off_check.cpp).
-void requireConsistentOff(const std::string& path, std::string_view text);
-
-/// \brief PLY header and data walked; throws InputError "PATH:LINE: ..." (ASCII) or "PATH: ..."
-/// (binary) for what assimp's reader would hang on, abort on, or misread (see ply_check.cpp).
-void requireConsistentPly(const std::string& path, std::string_view bytes);
 
 /// \brief COLLADA: every `<p>` index list holds integers and whitespace only, up to its `</p>`;
 /// throws InputError "PATH:LINE: ..." otherwise (assimp would read such a list forever, growing
 /// it until memory runs out; see collada_check.cpp).
 void requireIntegerIndexLists(const std::string& path, std::string_view text);
+
+/// \brief The readers: exact into double, InputError "PATH:LINE: ..." on anything malformed.
+PolygonSoup readObj(const std::string& path, std::string_view text);  ///< obj_reader.cpp
+PolygonSoup readOff(const std::string& path, std::string_view text);  ///< off_reader.cpp
+PolygonSoup readStl(const std::string& path, std::string_view bytes);  ///< stl_reader.cpp, after requireCompleteBinaryStl
+PolygonSoup readPly(const std::string& path, std::string_view bytes);  ///< ply_reader.cpp, ASCII and binary
 
 }  // namespace adsd::io::detail

@@ -1,8 +1,10 @@
 #include "adsd/io/load_mesh.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <new>
 #include <sstream>
@@ -264,8 +266,27 @@ std::uint64_t countSurfaceFaces(const aiScene& scene, std::uint64_t& lines, std:
   throw InputError(what);
 }
 
+std::string lowerCaseExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
 Mesh loadMeshUnguarded(const std::string& path) {
-  detail::checkBeforeAssimp(path);
+  detail::requireReadableFile(path);
+  // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
+  // docs/numerics.md for the measurement); everything else goes through assimp, in float.
+  const std::string ext = lowerCaseExtension(path);
+  if (ext == ".obj") return detail::meshFromSoup(detail::readObj(path, detail::readWholeFile(path)), path);
+  if (ext == ".off") return detail::meshFromSoup(detail::readOff(path, detail::readWholeFile(path)), path);
+  if (ext == ".stl") {
+    const std::string bytes = detail::readWholeFile(path);
+    detail::requireCompleteBinaryStl(path, bytes, bytes.size());
+    return detail::meshFromSoup(detail::readStl(path, bytes), path);
+  }
+  if (ext == ".ply") return detail::meshFromSoup(detail::readPly(path, detail::readWholeFile(path)), path);
+  if (ext == ".dae") detail::requireIntegerIndexLists(path, detail::readWholeFile(path));
 
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, 0);

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// \brief Reading meshes from files through assimp (OBJ, STL, PLY, OFF, COLLADA, ...).
+/// \brief Reading meshes from files: OBJ, OFF, PLY and STL into double without loss; COLLADA and
+/// every other format assimp reads through assimp, in float.
 
 #include <string>
 
@@ -10,17 +11,25 @@ namespace adsd::io {
 
 /// \brief Loads every triangle of the file as one mesh.
 ///
-/// Assimp triangulates polygons and joins identical vertices; each scene node's transform is
-/// applied (so the mesh is in the file's root frame; a mesh used by several nodes appears once per
-/// node); line and point primitives are dropped. COLLADA <unit> and <up_axis> are applied as
-/// assimp does by default, as OMPL.app's loading does. Zero-area triangles are kept.
+/// Precision, by format (the extension decides; docs/numerics.md has the measurement):
+/// - OBJ, OFF, ASCII PLY, ASCII STL: every coordinate as the double nearest its decimal text
+///   (std::from_chars), so 17 significant digits come back bit for bit; binary PLY with double
+///   properties: the doubles as stored.
+/// - binary STL, binary PLY with float properties: the file's float32 values, exactly.
+/// - anything else (COLLADA .dae, glTF, 3DS, ...): through assimp, which stores coordinates in
+///   float; node transforms are composed in double from assimp's float matrices. COLLADA <unit>
+///   and <up_axis> are applied as assimp does by default, as OMPL.app's loading does.
 ///
-/// Throws adsd::InputError, one line starting with the path (and ":LINE" where a line is known),
-/// for: a missing, unreadable, empty or non-regular file; a truncated binary STL or PLY; a file
-/// assimp cannot parse; a scene with no triangles (only lines or points, say); a vertex index out
-/// of range; a non-finite coordinate. OFF and PLY files are checked line by line first, because
-/// assimp 5.2 hangs on, aborts on, or silently repairs some malformed ones (see src/*_check.cpp).
-/// Running out of memory is reported the same way.
+/// Polygons become triangles (OBJ, OFF, PLY: fanned from the first corner; assimp: its own
+/// triangulation); line and point elements are dropped; bit-identical vertices are shared and
+/// unreferenced ones dropped, so counts match what assimp made of the same files; no coordinate
+/// is changed. Zero-area triangles are kept.
+///
+/// Throws adsd::InputError, one line starting with the path (and ":LINE" where the format has
+/// lines), for: a missing, unreadable, empty or non-regular file; a malformed line; a truncated
+/// binary STL or PLY; a file assimp cannot parse; no triangles (only lines or points, say); a
+/// vertex index out of range; a non-finite coordinate or one beyond +-tolerance::kMaxCoordinate
+/// (1e75). Running out of memory is reported the same way.
 Mesh loadMesh(const std::string& path);
 
 }  // namespace adsd::io

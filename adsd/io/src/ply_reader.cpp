@@ -1,19 +1,31 @@
-// The structure check for PLY files, run before assimp reads them.
+// PLY, ASCII and binary (both byte orders), read into double.
 //
-// Assimp 5.2's PLY reader loops forever on a header without end_header or with an element line
-// that lacks its count, aborts the process (a failed ai_assert) on a blank line inside ASCII data,
-// and fills short or missing data with whatever comes next. So the header is parsed here, the
-// data is walked instance by instance (ASCII: one instance per line, as PLY writers emit it;
-// binary: record by record, list lengths included), and face indices are checked against the
-// vertex count. Anything off is an error naming the line (ASCII) or the element and instance.
+// The header is parsed, the data walked instance by instance (ASCII: one instance per line, as PLY
+// writers emit it; binary: record by record, list lengths included), and each vertex's x, y, z
+// and each face's corner list (vertex_indices or vertex_index, any integer type) kept. ASCII
+// numbers go through std::from_chars, correctly rounded whatever type the header declares, so 17
+// significant digits come back bit for bit; binary float32 and float64 values are converted to
+// double exactly. Face indices are checked against the vertex count, coordinates must be finite
+// and within +-1e75 (tolerances.h). Anything off is an error naming the line (ASCII) or the element
+// and instance (binary).
 //
-// Two more, found by fuzzing (tests/fuzz/regressions/mesh_loader): a header line holding a control
-// character such as a vertical tab ("end_header\v"), which assimp's line reader does not take for
-// whitespace, so it never finds end_header and loops forever or reads past its buffer (SEGV); and
-// a face with no corners, which reaches assimp's triangulation step and fails its assertion
-// (abort). Both are refused here.
+// Why not CGAL's PLY reader (measured for issue 16; exact on double properties): it reads an ASCII
+// "float" property with strtof, rounding 17-digit text to float, took longer than assimp on the
+// Stanford dragon, reads only 32-bit index lists (a ushort list, which assimp read, fails with
+// "can't find vertex indices" printed on stderr), accepts a face index beyond the vertex count,
+// and answers a malformed file with "false" alone. This walk had to parse every value to name bad
+// lines anyway; keeping the values costs nothing more.
+//
+// The check was first written for assimp 5.2's PLY reader, which looped forever on a header
+// without end_header or with an element line lacking its count, aborted on a blank line inside
+// ASCII data or on a face with no corners, and read past its buffer on a control character in the
+// header (fuzz findings, tests/fuzz/regressions/mesh_loader/ply_*). Those rules stay: the files
+// are malformed whichever library reads them, and each still gets its line.
 
 #include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -21,6 +33,7 @@
 #include <vector>
 
 #include "adsd/error.h"
+#include "adsd/tolerances.h"
 #include "file_checks.h"
 #include "text_scan.h"
 
@@ -80,16 +93,18 @@ class PlyChecker {
  public:
   PlyChecker(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes), lines_(bytes) {}
 
-  void run() {
+  PolygonSoup run() {
     readHeader();
     for (const Element& e : elements_) {
       if (e.name == "vertex") vertexCount_ = e.count;
     }
+    if (vertexCount_ >= UINT32_MAX) throw InputError(path_ + ": more than 2^32 - 1 vertices");
     if (format_ == Format::ascii) {
       walkAscii();
     } else {
       walkBinary();
     }
+    return std::move(soup_);
   }
 
  private:
@@ -179,9 +194,46 @@ class PlyChecker {
     return prefix + e.name + " " + std::to_string(instance);
   }
 
+  /// Walks the ASCII data, one instance per line, and keeps what the mesh needs: each vertex's x,
+  /// y, z (every number through std::from_chars, correctly rounded, whatever type the header
+  /// declares, so 17 significant digits come back bit for bit) and each face's corner list.
+  /// For the vertex element: which property is x, y and z (-1 for other elements); every vertex
+  /// element with instances must have all three.
+  std::array<int, 3> coordinateProperties(const Element& e) {
+    std::array<int, 3> axisOf = {-1, -1, -1};
+    if (e.name != "vertex") return axisOf;
+    for (std::size_t k = 0; k < e.properties.size(); ++k) {
+      const std::string& name = e.properties[k].name;
+      if (!e.properties[k].isList && name.size() == 1 && name[0] >= 'x' && name[0] <= 'z') {
+        axisOf[static_cast<std::size_t>(name[0] - 'x')] = static_cast<int>(k);
+      }
+    }
+    if (e.count > 0) {
+      for (int axis = 0; axis < 3; ++axis) {
+        if (axisOf[static_cast<std::size_t>(axis)] < 0) {
+          throw InputError(path_ + ": the PLY vertex element has no property " + "xyz"[axis]);
+        }
+      }
+      soup_.points.reserve(static_cast<std::size_t>(e.count));
+    }
+    return axisOf;
+  }
+
+  /// A coordinate must be finite and within +-1e75 (tolerances.h); \p text shows it in the message.
+  void requireCoordinate(double value, const Element& e, long long instance, const Property& p,
+                         const std::string& text) const {
+    if (std::abs(value) <= tolerance::kMaxCoordinate) return;
+    throw InputError(where(e, instance) + ": property " + p.name + " is " + text +
+                     (std::isfinite(value) ? ", beyond +-1e75, where the distance computation's squared lengths "
+                                             "would overflow"
+                                           : ", a non-finite coordinate"));
+  }
+
   void walkAscii() {
     std::string_view line;
     for (const Element& e : elements_) {
+      const bool isVertex = e.name == "vertex";
+      const std::array<int, 3> axisOf = coordinateProperties(e);
       for (long long i = 0; i < e.count; ++i) {
         if (!lines_.next(line)) {
           throw InputError(path_ + ": the file ends after " + std::to_string(i) + " of the " +
@@ -190,37 +242,53 @@ class PlyChecker {
         const std::vector<std::string_view> t = splitWhitespace(line);
         if (t.empty()) throw InputError(at() + "blank line inside the PLY data (one " + e.name + " per line)");
         std::size_t k = 0;
-        auto value = [&](const ScalarType& type, const std::string& what) -> long long {
+        // The next value, parsed as \p type; \p role names it in a message ("property", "list").
+        auto value = [&](const ScalarType& type, const Property& p, const char* role, double& number) -> long long {
           if (k >= t.size()) {
-            throw InputError(where(e, i) + ": the line ends before its " + what + " (one " + e.name + " per line)");
+            throw InputError(where(e, i) + ": the line ends before its " + role + " " + p.name + " (one " + e.name +
+                             " per line)");
           }
-          double number = 0.0;
           long long integer = 0;
           const bool ok = type.isInteger ? parseInteger(t[k], integer) : parseDouble(t[k], number);
           if (!ok) {
             throw InputError(where(e, i) + ": " + quoteToken(t[k]) + " is not " +
                              (type.isInteger ? "an integer" : "a number"));
           }
+          if (type.isInteger) number = static_cast<double>(integer);
           ++k;
-          return type.isInteger ? integer : 0;
+          return integer;
         };
-        for (const Property& p : e.properties) {
+        Vec3 point = Vec3::Zero();
+        for (std::size_t q = 0; q < e.properties.size(); ++q) {
+          const Property& p = e.properties[q];
+          double number = 0.0;
           if (!p.isList) {
-            value(p.valueType, "property " + p.name);
+            value(p.valueType, p, "property", number);
+            for (int axis = 0; axis < 3; ++axis) {
+              if (axisOf[static_cast<std::size_t>(axis)] != static_cast<int>(q)) continue;
+              requireCoordinate(number, e, i, p, quoteToken(t[k - 1]));
+              point(axis) = number;
+            }
             continue;
           }
-          const long long n = value(p.countType, "length of list " + p.name);
+          const long long n = value(p.countType, p, "length of list", number);
           if (n < 0) throw InputError(where(e, i) + ": list " + p.name + " has negative length " + std::to_string(n));
           requireCorners(n, e, p, i);
+          const bool corners = isVertexIndexList(e, p) && p.valueType.isInteger;
           for (long long j = 0; j < n; ++j) {
-            const long long item = value(p.valueType, "list " + p.name);
-            if (isVertexIndexList(e, p)) checkIndex(item, e, i);
+            const long long item = value(p.valueType, p, "list", number);
+            if (corners) {
+              checkIndex(item, e, i);
+              soup_.addCorner(static_cast<std::uint32_t>(item));
+            }
           }
+          if (corners) soup_.closePolygon();
         }
         if (k != t.size()) {
           throw InputError(where(e, i) + ": " + std::to_string(t.size() - k) +
                            " values more than the header declares (one " + e.name + " per line)");
         }
+        if (isVertex) soup_.points.push_back(point);
       }
     }
   }
@@ -250,13 +318,47 @@ class PlyChecker {
     if (bytes > bytes_.size() - pos_) truncated(e, instance);
   }
 
+  /// One binary scalar at pos_ (bounds already checked) as a double: integers exactly, float32
+  /// and float64 as stored.
+  double readNumber(const ScalarType& type) const {
+    if (type.isInteger) return static_cast<double>(readInteger(type));
+    std::uint64_t bits = 0;
+    for (int b = 0; b < type.bytes; ++b) {
+      const int from = format_ == Format::binaryLittleEndian ? b : type.bytes - 1 - b;
+      bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes_[pos_ + static_cast<std::size_t>(from)]))
+              << (8 * b);
+    }
+    if (type.bytes == 4) {
+      float value;
+      const std::uint32_t narrow = static_cast<std::uint32_t>(bits);
+      std::memcpy(&value, &narrow, sizeof value);
+      return value;
+    }
+    double value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+  }
+
+  /// Walks the binary data record by record and keeps each vertex's x, y, z (as stored: float32 or
+  /// float64, converted to double exactly) and each face's corner list.
   void walkBinary() {
     pos_ = dataOffset_;
     for (const Element& e : elements_) {
+      const bool isVertex = e.name == "vertex";
+      const std::array<int, 3> axisOf = coordinateProperties(e);
       for (long long i = 0; i < e.count; ++i) {
-        for (const Property& p : e.properties) {
+        Vec3 point = Vec3::Zero();
+        for (std::size_t q = 0; q < e.properties.size(); ++q) {
+          const Property& p = e.properties[q];
           if (!p.isList) {
             require(static_cast<std::size_t>(p.valueType.bytes), e, i);
+            for (int axis = 0; axis < 3; ++axis) {
+              if (axisOf[static_cast<std::size_t>(axis)] != static_cast<int>(q)) continue;
+              const double number = readNumber(p.valueType);
+              char text[32];
+              requireCoordinate(number, e, i, p, std::string(text, std::to_chars(text, text + sizeof text, number).ptr));
+              point(axis) = number;
+            }
             pos_ += static_cast<std::size_t>(p.valueType.bytes);
             continue;
           }
@@ -268,11 +370,17 @@ class PlyChecker {
           const std::size_t itemBytes = static_cast<std::size_t>(p.valueType.bytes);
           if (static_cast<std::uint64_t>(n) > (bytes_.size() - pos_) / itemBytes) truncated(e, i);
           if (isVertexIndexList(e, p) && p.valueType.isInteger) {
-            for (long long j = 0; j < n; ++j, pos_ += itemBytes) checkIndex(readInteger(p.valueType), e, i);
+            for (long long j = 0; j < n; ++j, pos_ += itemBytes) {
+              const long long index = readInteger(p.valueType);
+              checkIndex(index, e, i);
+              soup_.addCorner(static_cast<std::uint32_t>(index));
+            }
+            soup_.closePolygon();
           } else {
             pos_ += static_cast<std::size_t>(n) * itemBytes;
           }
         }
+        if (isVertex) soup_.points.push_back(point);
       }
     }
   }
@@ -285,10 +393,11 @@ class PlyChecker {
   long long vertexCount_ = 0;
   std::size_t dataOffset_ = 0;
   std::size_t pos_ = 0;
+  PolygonSoup soup_;
 };
 
 }  // namespace
 
-void requireConsistentPly(const std::string& path, std::string_view bytes) { PlyChecker(path, bytes).run(); }
+PolygonSoup readPly(const std::string& path, std::string_view bytes) { return PlyChecker(path, bytes).run(); }
 
 }  // namespace adsd::io::detail

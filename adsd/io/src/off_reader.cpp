@@ -1,17 +1,28 @@
-// The structure check for OFF files, run before assimp reads them.
+// OFF, read line by line into double.
 //
-// Assimp 5.2's OFF reader repairs bad files without a word: an index beyond the vertex count is
-// clamped to the last vertex, a face with 0 or more than 9 corners is dropped, a missing vertex
-// line leaves vertices at the origin, and a line longer than its 4096-byte buffer is split in two.
-// Each of those would turn a broken file into a wrong mesh, so the file is read here first, the
-// way assimp will read it, and anything it would repair is an error naming the line.
+// Why not a library: CGAL's OFF scanner (the one exact candidate; OpenMesh rounds to float) is
+// exact but slower than assimp on the largest real model, bunny00.off (docs/numerics.md), and
+// says nothing but "false" on a bad file, while a malformed file must be reported with its line. The
+// format is a header and two lists of numbers, and every number goes through std::from_chars,
+// which rounds correctly: a coordinate written with 17 significant digits comes back bit for bit.
+//
+// What is read: the optional keyword (OFF, COFF, NOFF, CNOFF, STOFF, ...: extra values after a
+// vertex's three coordinates, such as colours or normals, are ignored), the counts (vertices,
+// faces, edges), then one vertex per line and one face per line ("n i1 ... in", extra values
+// after the indices ignored). '#' starts a comment anywhere; blank and comment lines are skipped.
+// Refused, with the line: homogeneous (4OFF) and n-dimensional (nOFF) variants and binary OFF,
+// fewer lines than the counts promise, a vertex without three numbers, a non-finite coordinate or
+// one beyond +-1e75 (tolerances.h), a face without its indices, an index out of range.
 
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "adsd/error.h"
+#include "adsd/tolerances.h"
 #include "file_checks.h"
 #include "text_scan.h"
 
@@ -19,10 +30,6 @@ namespace adsd::io::detail {
 
 namespace {
 
-/// Assimp's OFF reader copies each data line into a 4096-byte buffer (including the terminator).
-constexpr std::size_t kAssimpOffLineBuffer = 4096;
-/// Assimp drops faces with more corners than this.
-constexpr long long kAssimpOffMaxCorners = 9;
 constexpr long long kMaxCount = UINT32_MAX;
 
 std::string_view withoutComment(std::string_view line) {
@@ -30,13 +37,8 @@ std::string_view withoutComment(std::string_view line) {
   return hash == std::string_view::npos ? line : line.substr(0, hash);
 }
 
-bool isCommentLine(std::string_view line) {
-  const std::vector<std::string_view> tokens = splitWhitespace(line);
-  return !tokens.empty() && tokens.front().front() == '#';
-}
-
-/// "OFF" with assimp's optional prefixes ST, C, N, 4, n in that order. Sets \p plain false for the
-/// 4 (homogeneous) and n (dimension) variants, whose lines this check does not model.
+/// "OFF" with the optional prefixes ST, C, N, 4, n in that order. Sets \p plain false for the
+/// 4 (homogeneous) and n (dimension) variants.
 bool isOffKeyword(std::string_view token, bool& plain) {
   if (token.size() < 3 || token.substr(token.size() - 3) != "OFF") return false;
   std::string_view prefix = token.substr(0, token.size() - 3);
@@ -51,38 +53,44 @@ bool isOffKeyword(std::string_view token, bool& plain) {
   return prefix.empty();
 }
 
-class OffChecker {
- public:
-  OffChecker(const std::string& path, std::string_view text) : path_(path), lines_(text) {}
+std::string shortest(double x) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
+}
 
-  void run() {
+class OffReader {
+ public:
+  OffReader(const std::string& path, std::string_view text) : path_(path), lines_(text) {}
+
+  PolygonSoup run() {
     std::vector<long long> counts;
-    if (!readHeader(counts)) return;
+    readHeader(counts);
     const long long vertices = counts[0];
     const long long faces = counts[1];
     if (vertices == 0) throw InputError(path_ + ": the OFF header promises 0 vertices");
     if (faces == 0) throw InputError(path_ + ": the file holds no triangles (the OFF header promises 0 faces)");
 
-    skipBlankAndCommentLines();
+    PolygonSoup soup;
+    soup.points.reserve(static_cast<std::size_t>(vertices));
     for (long long v = 0; v < vertices; ++v) {
       const std::vector<std::string_view> tokens = nextDataLine("vertex", v, vertices);
-      double coordinate;
-      if (tokens.size() < 3 || !parseDouble(tokens[0], coordinate) || !parseDouble(tokens[1], coordinate) ||
-          !parseDouble(tokens[2], coordinate)) {
+      Vec3 p;
+      if (tokens.size() < 3 || !parseDouble(tokens[0], p.x()) || !parseDouble(tokens[1], p.y()) ||
+          !parseDouble(tokens[2], p.z())) {
         throw InputError(at() + "vertex " + std::to_string(v) + ": expected 3 coordinates, got " +
-                         (tokens.empty() ? std::string("an empty line") : quoteToken(current_)));
+                         quoteToken(withoutComment(current_)));
       }
+      requireRepresentable(p, v);
+      soup.points.push_back(p);
     }
+    soup.corners.reserve(static_cast<std::size_t>(3 * faces));
+    soup.starts.reserve(static_cast<std::size_t>(faces + 1));
     for (long long f = 0; f < faces; ++f) {
       const std::vector<std::string_view> tokens = nextDataLine("face", f, faces);
       long long corners = 0;
-      if (tokens.empty() || !parseInteger(tokens[0], corners)) {
-        throw InputError(at() + "face " + std::to_string(f) + ": expected a corner count, got " +
-                         (tokens.empty() ? std::string("an empty line") : quoteToken(tokens[0])));
-      }
-      if (corners < 1 || corners > kAssimpOffMaxCorners) {
-        throw InputError(at() + "face " + std::to_string(f) + " has " + std::to_string(corners) +
-                         " corners; assimp reads faces of 1 to " + std::to_string(kAssimpOffMaxCorners));
+      if (!parseInteger(tokens[0], corners) || corners < 1) {
+        throw InputError(at() + "face " + std::to_string(f) + ": expected a corner count of at least 1, got " +
+                         quoteToken(tokens[0]));
       }
       if (static_cast<long long>(tokens.size()) < corners + 1) {
         throw InputError(at() + "face " + std::to_string(f) + ": expected " + std::to_string(corners) +
@@ -98,16 +106,30 @@ class OffChecker {
           throw InputError(at() + "face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
                            " but the file has " + std::to_string(vertices) + " vertices (indices start at 0)");
         }
+        soup.addCorner(static_cast<std::uint32_t>(index));
       }
+      soup.closePolygon();
     }
+    return soup;
   }
 
  private:
   std::string at() const { return path_ + ":" + std::to_string(lines_.lineNumber()) + ": "; }
 
-  /// Reads the keyword (optional) and the three counts, which may span lines and carry comments
-  /// (assimp skips blank and '#' lines between them). Returns false for variants not modelled here.
-  bool readHeader(std::vector<long long>& counts) {
+  void requireRepresentable(const Vec3& p, long long v) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!std::isfinite(p(axis))) {
+        throw InputError(at() + "vertex " + std::to_string(v) + " has a non-finite coordinate " + shortest(p(axis)));
+      }
+      if (std::abs(p(axis)) > tolerance::kMaxCoordinate) {
+        throw InputError(at() + "vertex " + std::to_string(v) + ": coordinate " + shortest(p(axis)) +
+                         " is beyond +-1e75, where the distance computation's squared lengths would overflow");
+      }
+    }
+  }
+
+  /// Reads the keyword (optional) and the three counts, which may span lines and carry comments.
+  void readHeader(std::vector<long long>& counts) {
     bool first = true;
     std::string_view line;
     while (counts.size() < 3) {
@@ -121,8 +143,9 @@ class OffChecker {
         first = false;
         bool plain = true;
         if (isOffKeyword(tokens[0], plain)) {
-          if (!plain) return false;
+          if (!plain) throw InputError(at() + "homogeneous (4OFF) and n-dimensional (nOFF) OFF files are not read");
           ++t;
+          if (t < tokens.size() && tokens[t] == "BINARY") throw InputError(at() + "binary OFF is not read (write ASCII OFF or binary PLY)");
         }
       }
       for (; t < tokens.size(); ++t) {
@@ -138,30 +161,18 @@ class OffChecker {
         counts.push_back(count);
       }
     }
-    return true;
   }
 
-  /// Assimp moves from the counts to the first vertex past blank lines and '#' lines.
-  void skipBlankAndCommentLines() {
-    std::string_view line;
-    LineScanner lookahead = lines_;
-    while (lookahead.next(line) && (isBlank(line) || isCommentLine(line))) lines_ = lookahead;
-  }
-
-  /// The next line assimp would read as data: empty lines are skipped (its line reader swallows
-  /// runs of line ends), anything else counts, including a blank or comment line.
+  /// The next line with data: blank lines and comments are skipped.
   std::vector<std::string_view> nextDataLine(const char* what, long long index, long long promised) {
-    do {
+    while (true) {
       if (!lines_.next(current_)) {
         throw InputError(path_ + ": the OFF header promises " + std::to_string(promised) + " " + what +
                          (promised == 1 ? "" : "s") + " but the file ends after " + std::to_string(index));
       }
-    } while (current_.empty());
-    if (current_.size() >= kAssimpOffLineBuffer) {
-      throw InputError(at() + "line longer than " + std::to_string(kAssimpOffLineBuffer - 1) +
-                       " characters, which assimp's OFF reader would split");
+      std::vector<std::string_view> tokens = splitWhitespace(withoutComment(current_));
+      if (!tokens.empty()) return tokens;
     }
-    return splitWhitespace(current_);
   }
 
   const std::string& path_;
@@ -171,6 +182,6 @@ class OffChecker {
 
 }  // namespace
 
-void requireConsistentOff(const std::string& path, std::string_view text) { OffChecker(path, text).run(); }
+PolygonSoup readOff(const std::string& path, std::string_view text) { return OffReader(path, text).run(); }
 
 }  // namespace adsd::io::detail

@@ -1,0 +1,110 @@
+#include "polygon_soup.h"
+
+#include <charconv>
+#include <cstring>
+#include <unordered_map>
+#include <utility>
+
+#include "adsd/error.h"
+#include "adsd/tolerances.h"
+
+namespace adsd::io::detail {
+
+namespace {
+
+/// Coordinates compared by their bits: +0 and -0 stay apart (harmless: both are kept), and no two
+/// points that differ in any bit are ever merged, which an epsilon would do.
+struct PointBits {
+  std::uint64_t x, y, z;
+  bool operator==(const PointBits& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct PointBitsHash {
+  std::size_t operator()(const PointBits& p) const {
+    std::uint64_t h = p.x * 0x9E3779B97F4A7C15ull;
+    h ^= (p.y + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2)) * 0xBF58476D1CE4E5B9ull;
+    h ^= (p.z + 0x94D049BB133111EBull + (h << 6) + (h >> 2)) * 0x94D049BB133111EBull;
+    return static_cast<std::size_t>(h ^ (h >> 31));
+  }
+};
+
+PointBits bitsOf(const Vec3& p) {
+  PointBits b;
+  std::memcpy(&b.x, &p.x(), 8);
+  std::memcpy(&b.y, &p.y(), 8);
+  std::memcpy(&b.z, &p.z(), 8);
+  return b;
+}
+
+std::string shortest(double x) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
+}
+
+}  // namespace
+
+void requireRepresentablePoints(const PolygonSoup& soup, const std::string& path) {
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const Vec3& p = soup.points[i];
+    if (!p.allFinite()) {
+      throw InputError(path + ": vertex " + std::to_string(i) + " has a non-finite coordinate (" + shortest(p.x()) +
+                       ", " + shortest(p.y()) + ", " + shortest(p.z()) + ")");
+    }
+    Eigen::Index axis = 0;
+    if (p.cwiseAbs().maxCoeff(&axis) > tolerance::kMaxCoordinate) {
+      throw InputError(path + ": vertex " + std::to_string(i) + " has coordinate " + "xyz"[axis] + " = " +
+                       shortest(p(axis)) + ", beyond +-1e75, where the distance computation's squared lengths " +
+                       "would overflow");
+    }
+  }
+}
+
+Mesh meshFromSoup(PolygonSoup soup, const std::string& path) {
+  std::uint64_t lines = 0, points = 0;
+  std::vector<TriangleIndices> triangles;
+  triangles.reserve(soup.corners.size() / 3);
+  constexpr std::uint32_t kUnused = UINT32_MAX;
+  std::vector<std::uint32_t> newIndex(soup.points.size(), kUnused);
+  std::vector<Vec3> vertices;
+  vertices.reserve(soup.points.size());
+  std::unordered_map<PointBits, std::uint32_t, PointBitsHash> shared;
+  shared.reserve(soup.points.size());
+  auto vertexFor = [&](std::uint32_t point, std::size_t polygon) {
+    if (point >= soup.points.size()) {
+      throw InputError(path + ": face " + std::to_string(polygon) + " refers to vertex " + std::to_string(point) +
+                       " but the file has " + std::to_string(soup.points.size()) + " vertices");
+    }
+    std::uint32_t& index = newIndex[point];
+    if (index == kUnused) {
+      const auto [it, inserted] = shared.emplace(bitsOf(soup.points[point]), static_cast<std::uint32_t>(vertices.size()));
+      if (inserted) vertices.push_back(soup.points[point]);
+      index = it->second;
+    }
+    return index;
+  };
+  for (std::size_t p = 0; p < soup.polygonCount(); ++p) {
+    const std::uint64_t begin = soup.starts[p], end = soup.starts[p + 1];
+    const std::uint64_t n = end - begin;
+    if (n == 1) ++points;
+    if (n == 2) ++lines;
+    if (n < 3) continue;
+    const std::uint32_t first = vertexFor(soup.corners[begin], p);
+    std::uint32_t previous = vertexFor(soup.corners[begin + 1], p);
+    for (std::uint64_t k = begin + 2; k < end; ++k) {
+      const std::uint32_t next = vertexFor(soup.corners[k], p);
+      triangles.push_back({first, previous, next});
+      previous = next;
+    }
+  }
+  if (triangles.empty()) {
+    std::string what = path + ": the file holds no triangles";
+    if (lines + points > 0) {
+      what += " (only " + std::to_string(lines) + " lines and " + std::to_string(points) +
+              " points, which are not surfaces)";
+    }
+    throw InputError(what);
+  }
+  soup = PolygonSoup();  // the file's copy is no longer needed before the Mesh takes its own
+  return Mesh(std::move(vertices), std::move(triangles), path);
+}
+
+}  // namespace adsd::io::detail

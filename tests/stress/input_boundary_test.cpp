@@ -1,0 +1,109 @@
+// The library's input boundary (issue 16): what distance() cannot answer exactly is refused with an
+// InputError saying what and where, never answered. Before these checks, a coordinate of 1e155
+// made distance() return inf with status exact (squared lengths overflow), and a sheared pose was
+// accepted and answered 1.48519 by the tree path where brute force gives 1.43264.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "adsd/distance.h"
+#include "adsd/error.h"
+#include "adsd/tolerances.h"
+#include "oracle.h"
+
+namespace adsd {
+namespace {
+
+Mesh triangleAt(double x, const std::string& name = "tri") {
+  return Mesh({Vec3(x, 0, 0), Vec3(x + 1, 0, 0), Vec3(x, 1, 0)}, {{0, 1, 2}}, name);
+}
+
+/// The message of the InputError \p run throws (fails the test if it throws none).
+template <typename Run>
+std::string refusal(Run run) {
+  try {
+    run();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted, expected an InputError";
+  return "";
+}
+
+TEST(InputBoundary, CoordinatesBeyondTheLimitAreRefusedByMesh) {
+  EXPECT_NO_THROW(triangleAt(tolerance::kMaxCoordinate - 1.0));
+  // 1e155: the issue's case, where squared distances overflowed to inf.
+  for (const double x : {1e155, -1e155, 2 * tolerance::kMaxCoordinate, std::numeric_limits<double>::max()}) {
+    const std::string message = refusal([&] { triangleAt(x, "far.obj"); });
+    EXPECT_EQ(message.rfind("far.obj: vertex 0 has coordinate x = ", 0), 0u) << message;
+    EXPECT_NE(message.find("beyond +-1e+75"), std::string::npos) << message;
+  }
+  Mesh mesh = triangleAt(0.0, "moving");
+  const std::string message =
+      refusal([&] { mesh.setVertices({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, -3e80)}); });
+  EXPECT_EQ(message.rfind("moving: vertex 2 has coordinate z = -3", 0), 0u) << message;
+  EXPECT_EQ(mesh.vertices()[2], Vec3(0, 1, 0)) << "a refused update leaves the mesh unchanged";
+}
+
+TEST(InputBoundary, AtTheLimitTheAnswerIsFiniteAndRight) {
+  // Two unit-free triangles at the largest accepted magnitude, 1e75 apart along x and 2e74 along
+  // y: the oracle's binary128 brute force and the core must agree, finite.
+  const double big = tolerance::kMaxCoordinate;
+  const Mesh a({Vec3(-big, 0, 0), Vec3(-big, big, 0), Vec3(-big, 0, big)}, {{0, 1, 2}});
+  const Mesh b({Vec3(0, 0.2 * big, 0), Vec3(0, big, 0), Vec3(0, 0.2 * big, big)}, {{0, 1, 2}});
+  const DistanceResult r = distance(a, Pose::Identity(), b, Pose::Identity());
+  const double expected = oracle::meshDistance(a, Pose::Identity(), b, Pose::Identity()).value;
+  ASSERT_TRUE(std::isfinite(r.distance));
+  EXPECT_NEAR(r.distance, expected, 1e-10 * expected);
+}
+
+TEST(InputBoundary, NonRigidPosesAreRefused) {
+  const Mesh a = triangleAt(0.0), b = triangleAt(3.0);
+  auto query = [&](const Pose& poseB) { return [&a, &b, poseB] { distance(a, Pose::Identity(), b, poseB); }; };
+
+  Pose scaled = Pose::Identity();
+  scaled.matrix()(0, 0) = 2.0;
+  std::string message = refusal(query(scaled));
+  EXPECT_EQ(message.rfind("distance query: pose of mesh B is not rigid: its rotation part R has |R^T R - I| up to 3", 0), 0u)
+      << message;
+
+  Pose sheared = Pose::Identity();
+  sheared.matrix()(0, 1) = 0.3;
+  EXPECT_NE(refusal(query(sheared)).find("not rigid"), std::string::npos);
+
+  Pose projective = Pose::Identity();
+  projective.matrix()(3, 2) = 1e-3;
+  message = refusal(query(projective));
+  EXPECT_NE(message.find("bottom row"), std::string::npos) << message;
+
+  Pose floatRotation(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix().cast<float>().cast<double>());
+  EXPECT_NE(refusal(query(floatRotation)).find("not rigid"), std::string::npos) << "a rotation rounded to float";
+
+  Pose nan = Pose::Identity();
+  nan.matrix()(1, 3) = std::nan("");
+  EXPECT_EQ(refusal([&] { distance(a, nan, b, Pose::Identity()); }), "distance query: pose of mesh A has a non-finite entry");
+
+  Pose far = Pose::Identity();
+  far.translation() = Vec3(0, 0, -1e100);
+  message = refusal(query(far));
+  EXPECT_NE(message.find("translation entry of 1e+100"), std::string::npos) << message;
+}
+
+TEST(InputBoundary, RigidPosesBuiltInDoubleAreAccepted) {
+  const Mesh a = triangleAt(0.0), b = triangleAt(3.0);
+  for (int k = 0; k < 200; ++k) {
+    // Unit quaternions and long products of rotations: within a few 1e-16 of orthonormal.
+    Pose pose = Pose::Identity();
+    for (int j = 0; j <= k; ++j) pose.rotate(Eigen::AngleAxisd(0.1 + 0.37 * j, Vec3(1, j, 2 - j).normalized()));
+    pose.pretranslate(Vec3(k, -k, 1e8));
+    const Pose other(Eigen::Quaterniond(1.0 + k, 2.0, -3.0, 0.5 * k).normalized());
+    EXPECT_NO_THROW(distance(a, pose, b, other));
+  }
+}
+
+}  // namespace
+}  // namespace adsd
