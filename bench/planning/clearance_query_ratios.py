@@ -24,13 +24,12 @@ Exit status: 0; 1 when adsd benchmark or ompl_benchmark_statistics fails; 2 on b
 import argparse
 import os
 import re
-import sqlite3
 import statistics
 import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from solve_time_ratios import COMBINATION, variant_cfg  # noqa: E402
+from solve_time_ratios import COMBINATION, variant_cfg, write_database  # noqa: E402
 
 
 def clearance_cfg(source, planner, seconds):
@@ -83,15 +82,7 @@ def main():
                     sys.exit("clearance_query_ratios.py: expected one log in %s, found %d" % (out, len(found)))
                 logs.append(found[0])
                 checkers.append((checker, seed))
-        database = os.path.join(a.out, problem, "runs.db")
-        if os.path.exists(database):
-            os.remove(database)
-        result = subprocess.run(["ompl_benchmark_statistics"] + logs + ["-d", database],
-                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        if result.returncode != 0:
-            sys.stderr.write(result.stderr)
-            sys.exit("clearance_query_ratios.py: ompl_benchmark_statistics failed (exit %d)" % result.returncode)
-        connection = sqlite3.connect("file:%s?mode=ro" % database, uri=True)
+        connection = write_database(logs, os.path.join(a.out, problem, "runs.db"), "clearance_query_ratios.py")
         try:
             experiments = [e for (e,) in connection.execute("SELECT id FROM experiments ORDER BY id")]
             runs = connection.execute(

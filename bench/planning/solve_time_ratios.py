@@ -102,20 +102,24 @@ def variant_cfg(source, planners, runs, seconds):
     return "\n".join(out) + "\n"
 
 
-def read_runs(logs, database):
-    """Every run of LOGS as (index of its log in LOGS, database row), through one call of
-    ompl_benchmark_statistics that writes DATABASE: it makes each log an experiment, numbered in
-    the order given (one call for all logs, as the program's start-up costs more than a short
-    problem's run)."""
+def write_database(logs, database, program="solve_time_ratios.py"):
+    """DATABASE made anew from LOGS by one call of ompl_benchmark_statistics, which makes each log
+    an experiment, numbered in the order given (one call for all logs, as the program's start-up
+    costs more than a short problem's run); opened read-only. PROGRAM names the caller in errors."""
     if os.path.exists(database):
         os.remove(database)
     result = subprocess.run(["ompl_benchmark_statistics"] + logs + ["-d", database],
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     if result.returncode != 0:
         sys.stderr.write(result.stderr)
-        sys.exit("solve_time_ratios.py: ompl_benchmark_statistics failed on %d logs (exit %d)" % (
-            len(logs), result.returncode))
-    connection = sqlite3.connect("file:%s?mode=ro" % database, uri=True)
+        sys.exit("%s: ompl_benchmark_statistics failed on %d logs (exit %d)" % (program, len(logs), result.returncode))
+    return sqlite3.connect("file:%s?mode=ro" % database, uri=True)
+
+
+def read_runs(logs, database):
+    """Every run of LOGS as (index of its log in LOGS, database row), from DATABASE
+    (write_database)."""
+    connection = write_database(logs, database)
     try:
         experiments = connection.execute("SELECT id, seed FROM experiments ORDER BY id").fetchall()
         # Each log is named STEM.seed-S.log after the seed it ran with, which its experiment records.
