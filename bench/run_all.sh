@@ -37,6 +37,8 @@
 #   planning_solve_times_hard.md
 #                         bench/planning/solve_time_ratios.py: the end-to-end rows (RRTConnect
 #                         and PRM, median solve time with our checker and FCL's, interleaved)
+#   clearance_queries.md  bench/planning/clearance_query_ratios.py: RRT* with the clearance
+#                         objective, each checker's time per clearance query, same seeds
 #   planning_control.md, planning_control_hard.md (--long only)
 #                         the same with FCL's checker in both places (--control fcl): how far
 #                         those rows move when nothing differs
@@ -59,7 +61,7 @@ while [[ $# -gt 0 ]]; do
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
     --page|--readme) [[ $# -ge 2 ]] || { echo "run_all.sh: $1 needs a file" >&2; exit 2; }; page=$2; shift ;;
-    -h|--help) sed -n '2,49p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,52p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
@@ -123,6 +125,11 @@ paste_results() {
     planning_tables planning_solve_times planning_solve_times_maze planning_solve_times_maze_prm \
       planning_solve_times_hard
     /usr/bin/python3 bench/paste_results.py "$page" planning "${calls[@]}" "${tables[@]}"
+  fi
+  if [[ -f bench/results/clearance_queries.md ]]; then
+    /usr/bin/python3 bench/paste_results.py "$page" clearance \
+      "bench/planning/clearance_query_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --seeds 5 --time 2" \
+      bench/results/clearance_queries.md
   fi
   if [[ -f bench/results/planning_control.md ]]; then
     planning_tables planning_control planning_control_hard
@@ -255,13 +262,18 @@ if [[ $planning -eq 1 ]]; then
     echo "run_all.sh: no --long: planning_control*.md kept from the last run with --long" >&2
     cp bench/results/planning_control*.md "$staging/"
   fi
+  # Clearance-optimal planning: RRT* with the clearance objective, each checker's time per
+  # clearance query on the same seeds (RRT* uses its whole time limit).
+  step clearance_queries /usr/bin/python3 bench/planning/clearance_query_ratios.py --adsd "$build/planner/app/adsd" \
+    --problems "$build/problem_files" --out "$planning_work/clearance" --seeds 5 --time 2
+  cp "$planning_work/clearance/clearance_queries.md" "$staging/clearance_queries.md"
   cp "$planning_work/fast/solve_times.md" "$staging/planning_solve_times.md"
   cp "$planning_work/maze/solve_times.md" "$staging/planning_solve_times_maze.md"
   cp "$planning_work/maze_prm/solve_times.md" "$staging/planning_solve_times_maze_prm.md"
   cp "$planning_work/hard/solve_times.md" "$staging/planning_solve_times_hard.md"
   rm -rf "$planning_work"
 elif [[ -d bench/results ]]; then
-  cp bench/results/planning_*.md "$staging/" 2>/dev/null || true
+  cp bench/results/planning_*.md bench/results/clearance_queries.md "$staging/" 2>/dev/null || true
 fi
 # The stress tables are the numerics suite's (tests/stress: the soak and a run of the current core,
 # pasted into docs/numerics.md), and prm_thin_wall_repeat*.md two repeats of one planning command
