@@ -677,20 +677,16 @@ int benchmark(const std::vector<std::string>& args) {
 /// \brief Entry point of `adsd benchmark`; \p args are the arguments after "benchmark".
 int benchmarkCommand(const std::vector<std::string>& args) {
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-  try {
-    return benchmark(args);
-  } catch (const cli::UsageError& e) {
-    return cli::reportUsageError("adsd benchmark", e);
-  } catch (const InputError& e) {
-    std::cerr << "adsd benchmark: error: " << e.what() << '\n';
-    return 2;
-  } catch (const ToolFailure& e) {
-    std::cerr << "adsd benchmark: error: " << e.what() << '\n';
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "adsd benchmark: internal error: " << e.what() << '\n';
-    return 1;
-  }
+  return reportingErrors("adsd benchmark", [&] {
+    // A tool the benchmark runs failed (ompl_benchmark_statistics, the plotter): an error of the
+    // run, not of its input, so exit status 1.
+    try {
+      return benchmark(args);
+    } catch (const ToolFailure& e) {
+      std::cerr << "adsd benchmark: error: " << e.what() << '\n';
+      return 1;
+    }
+  });
 }
 
 }  // namespace adsd::app

@@ -333,17 +333,7 @@ int runDistance(const std::vector<std::string>& args) {
 }  // namespace
 
 int distanceCommand(const std::vector<std::string>& args) {
-  try {
-    return runDistance(args);
-  } catch (const cli::UsageError& e) {
-    return cli::reportUsageError("adsd distance", e);
-  } catch (const InputError& e) {
-    std::cerr << "adsd distance: error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "adsd distance: internal error: " << e.what() << '\n';
-    return 1;
-  }
+  return reportingErrors("adsd distance", [&] { return runDistance(args); });
 }
 
 }  // namespace adsd::app

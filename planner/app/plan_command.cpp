@@ -233,17 +233,7 @@ int plan(const std::vector<std::string>& args) {
 /// \brief Entry point of `adsd plan`; \p args are the arguments after "plan".
 int planCommand(const std::vector<std::string>& args) {
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-  try {
-    return plan(args);
-  } catch (const cli::UsageError& e) {
-    return cli::reportUsageError("adsd plan", e);
-  } catch (const InputError& e) {
-    std::cerr << "adsd plan: error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "adsd plan: internal error: " << e.what() << '\n';
-    return 1;
-  }
+  return reportingErrors("adsd plan", [&] { return plan(args); });
 }
 
 }  // namespace adsd::app

@@ -158,17 +158,7 @@ int view(const std::vector<std::string>& args) {
 /// \brief Entry point of `adsd view`; \p args are the arguments after "view".
 int viewCommand(const std::vector<std::string>& args) {
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-  try {
-    return view(args);
-  } catch (const cli::UsageError& e) {
-    return cli::reportUsageError("adsd view", e);
-  } catch (const InputError& e) {
-    std::cerr << "adsd view: error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "adsd view: internal error: " << e.what() << '\n';
-    return 1;
-  }
+  return reportingErrors("adsd view", [&] { return view(args); });
 }
 
 }  // namespace adsd::app
