@@ -1,9 +1,9 @@
 /// \file
-/// \brief Every query mode against FCL, band by band: near contact, mid range, far apart, the
-/// uniform states of a planning problem's sampler, and in collision.
+/// \brief Every query mode against FCL, band by band: near contact, mid range, far apart,
+/// uniform states over a planning problem's environment box, and in collision.
 ///
-///   bench_bands [--scenes a,b,...] [--pairs A.off:B.off,...] [--poses N] [--rounds R]
-///               [--seed S] [--csv FILE] [--quick]
+///   bench_bands [--scenes a,b,...] [--pairs A.off:B.off,...] [--bands near,...] [--poses N]
+///               [--rounds R] [--seed S] [--csv FILE] [--summary-md FILE] [--quick]
 ///
 /// Why bands: a planner asks for clearance at every distance, mostly far from contact, while
 /// bench_scenes places its queries near contact only. Each band is drawn with FCL (placement
@@ -25,15 +25,17 @@
 /// pairs' hulls are apart); a problem's robot slides from a random state until its clearance is
 /// the target (near_obstacle_poses.h). Every exact answer must agree with FCL's within 1e-9 L and
 /// every validity answer with FCL's collide; the program exits 3 otherwise, so a speed-up cannot
-/// hide a wrong answer. Prints per scene and band the median and 90th percentile microseconds, the
-/// ratios of medians, and the median node pairs of our exact and tolerance queries; then a
-/// summary per band over the scenes (median and worst ratio). --csv writes one row per query.
+/// hide a wrong answer. Prints per scene and band the median microseconds of each method, the
+/// ratios of medians, the median node pairs of our exact, tolerance and validity queries and the
+/// largest error against FCL; then a summary per band over the scenes (median and worst scene).
+/// --csv writes one row per query, method and round.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -192,10 +194,8 @@ std::vector<PosePair> collidingPairPoses(const Mesh& a, const Mesh& b, std::size
 struct BandResult {
   std::string scene, band;
   double ours = 0, tolerance = 0, validity = 0, capped = 0, fclDistance = 0, fclCollide = 0;  // median us
-  double oursP90 = 0, fclDistanceP90 = 0;
   double nodePairsExact = 0, nodePairsTolerance = 0, nodePairsValidity = 0;  // medians
   double worstError = 0;          // max |ours - FCL| / L
-  double worstToleranceError = 0; // max (tolerance answer - exact) / exact
   bool distances = true;          // false: the collision band (validity only)
 };
 
@@ -258,8 +258,18 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     const std::size_t n = band.poses.size();
     if (n == 0) continue;
     const bool distances = band.name != "collision";
-    std::vector<double> exact(n), tolerance(n), capped(n), fclD(n);
-    std::vector<char> freeOurs(n), freeFcl(n);
+    // Each method's answer per query, by the method's name (validity: 1 free, 0 in contact); the
+    // checks below and the CSV read them from here.
+    std::map<std::string, std::vector<double>> answers;
+    for (const char* name : {"exact", "tolerance", "capped", "fcl_distance", "validity", "fcl_collide"}) {
+      answers[name].assign(n, 0.0);
+    }
+    std::vector<double>& exact = answers["exact"];
+    std::vector<double>& tolerance = answers["tolerance"];
+    std::vector<double>& capped = answers["capped"];
+    std::vector<double>& fclD = answers["fcl_distance"];
+    std::vector<double>& freeOurs = answers["validity"];
+    std::vector<double>& freeFcl = answers["fcl_collide"];
     std::vector<double> pairsExact(n), pairsTolerance(n), pairsValidity(n);
     auto query = [&](std::size_t i, const adsd::DistanceOptions& options, adsd::DistanceScratch& scratch) {
       const PosePair& p = band.poses[i];
@@ -287,12 +297,12 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     }
     methods.push_back({"validity", [&](std::size_t i) {
                          const adsd::DistanceResult r = query(i, adsd::DistanceOptions::aboveThreshold(0.0), scratchValidity);
-                         freeOurs[i] = r.status == adsd::DistanceStatus::aboveThreshold;
+                         freeOurs[i] = r.status == adsd::DistanceStatus::aboveThreshold ? 1.0 : 0.0;
                          pairsValidity[i] = static_cast<double>(r.counters.subMeshPairs);
                        }, {}, {}});
     methods.push_back({"fcl_collide", [&](std::size_t i) {
                          const PosePair& p = band.poses[i];
-                         freeFcl[i] = !adsd::bench::fclCollide(*fa, p.a, *fb, p.b);
+                         freeFcl[i] = adsd::bench::fclCollide(*fa, p.a, *fb, p.b) ? 0.0 : 1.0;
                        }, {}, {}});
     adsd::bench::runInterleaved(methods, n, o.rounds);
 
@@ -300,18 +310,9 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     r.scene = sceneName;
     r.band = band.name;
     r.distances = distances;
-    auto med = [&](const std::string& name) {
-      for (const auto& m : methods) {
-        if (m.name == name) return adsd::bench::median(m.micros);
-      }
-      return 0.0;
-    };
-    auto p90 = [&](const std::string& name) {
-      for (const auto& m : methods) {
-        if (m.name == name) return adsd::bench::p90(m.micros);
-      }
-      return 0.0;
-    };
+    std::map<std::string, double> medians;
+    for (const auto& m : methods) medians[m.name] = adsd::bench::median(m.micros);
+    auto med = [&](const char* name) { return medians.at(name); };
     r.validity = med("validity");
     r.nodePairsValidity = adsd::bench::median(pairsValidity);
     r.fclCollide = med("fcl_collide");
@@ -324,13 +325,11 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     }
     if (distances) {
       r.ours = med("exact"), r.tolerance = med("tolerance"), r.capped = med("capped"), r.fclDistance = med("fcl_distance");
-      r.oursP90 = p90("exact"), r.fclDistanceP90 = p90("fcl_distance");
       r.nodePairsExact = adsd::bench::median(pairsExact);
       r.nodePairsTolerance = adsd::bench::median(pairsTolerance);
       const double cap = kCapFraction * length;
       for (std::size_t i = 0; i < n; ++i) {
         r.worstError = std::max(r.worstError, std::abs(exact[i] - fclD[i]) / length);
-        if (exact[i] > 0.0) r.worstToleranceError = std::max(r.worstToleranceError, (tolerance[i] - exact[i]) / exact[i]);
         const bool capOk = exact[i] >= cap ? capped[i] >= cap * (1.0 - 1e-12) : std::abs(capped[i] - exact[i]) <= kAgreement * length;
         const bool tolOk = tolerance[i] >= exact[i] - kAgreement * length &&
                            tolerance[i] <= exact[i] * (1.0 + kRelativeTolerance) + kAgreement * length;
@@ -345,13 +344,7 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
       for (const auto& m : methods) {
         for (std::size_t k = 0; k < m.micros.size(); ++k) {
           const std::size_t i = k % n;
-          double value = 0.0;
-          if (m.name == "exact") value = exact[i];
-          else if (m.name == "tolerance") value = tolerance[i];
-          else if (m.name == "capped") value = capped[i];
-          else if (m.name == "fcl_distance") value = fclD[i];
-          else if (m.name == "validity") value = freeOurs[i];
-          else value = freeFcl[i];
+          const double value = answers.at(m.name)[i];
           *csv << sceneName << ',' << band.name << ',' << m.name << ',' << i << ',';
           char buffer[96];
           std::snprintf(buffer, sizeof buffer, "%.17g,%.17g,%.4f\n", length, value, m.micros[k]);
