@@ -74,8 +74,11 @@ void Query::testAllPairs(const SubMesh& a, const SubMesh& b) {
       // tests/stress ThresholdModeNeverAnswersAnInfiniteDistance.)
       const Vec3 gap = (q0.cwiseMin(q1).cwiseMin(q2) - hiA).cwiseMax(loA - q0.cwiseMax(q1).cwiseMax(q2)).cwiseMax(0.0);
       if (std::isfinite(best_) && skip(gap.norm() - roundoff_)) continue;
-      const TrianglePairResult t = triangleDistanceUpTo(p0, p1, p2, q0, q1, q2, enoughDistance());
+      const double limit = pruneBound();
+      const double ceiling = triangleCeiling(limit);
+      const TrianglePairResult t = triangleDistanceBelow(p0, p1, p2, q0, q1, q2, enoughDistance(), ceiling);
       ++counters_.trianglePairsTested;
+      leftOutAbove(t.distance, ceiling, limit);
       offer(t.pointOnA, t.pointOnB, t.distance, ta, false, tb, false);
     }
   }

@@ -165,6 +165,19 @@ class Query {
   /// What a triangle pair's distance may stop at (triangleDistanceUpTo): a validity query's
   /// threshold, as any pair within it decides the query; nothing (-1) for the other modes.
   double enoughDistance() const { return options_.mode == QueryMode::threshold ? options_.threshold : -1.0; }
+  /// What a triangle pair's distance matters below (triangleDistanceBelow) on the paths from
+  /// scratch: the prune bound with its roundoff allowance once some pair has been measured (those
+  /// paths must end with a real distance, so nothing is left out before one), else nothing.
+  double triangleCeiling(double limit) const {
+    return std::isfinite(best_) ? limit + roundoff_ : std::numeric_limits<double>::infinity();
+  }
+  /// Accounts for a pair that triangleDistanceBelow found at or beyond \p ceiling, which is
+  /// \p limit plus the roundoff allowance: the pair's true distance exceeds \p limit, the lower
+  /// bound recorded for the interval (passed, not recovered from the ceiling, which could round
+  /// below it).
+  void leftOutAbove(double found, double ceiling, double limit) {
+    if (!(found < ceiling)) minSkippedLower_ = std::min(minSkippedLower_, limit);
+  }
 
   const Mesh& a_;
   const Mesh& b_;

@@ -47,10 +47,13 @@ void Query::testSlabPair(const SlabTriangle& ta, const SlabTriangle& tb) {
   // Box bound first: pairs that cannot beat the global upper bound are dropped without the exact
   // test (the dropped bound is recorded by skip() for the interval).
   if (skip(boxDistance(ta, tb) - roundoff_)) return;
+  const double limit = pruneBound();
+  const double ceiling = triangleCeiling(limit);
   const TrianglePairResult t =
-      triangleDistanceUpTo(ta.corner[0], ta.corner[1], ta.corner[2], tb.corner[0], tb.corner[1], tb.corner[2],
-                           enoughDistance());
+      triangleDistanceBelow(ta.corner[0], ta.corner[1], ta.corner[2], tb.corner[0], tb.corner[1], tb.corner[2],
+                            enoughDistance(), ceiling);
   ++counters_.trianglePairsTested;
+  leftOutAbove(t.distance, ceiling, limit);
   offer(t.pointOnA, t.pointOnB, t.distance, ta.triangle, false, tb.triangle, false);
 }
 

@@ -374,9 +374,12 @@ void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, con
         minSkippedLower_ = std::min(minSkippedLower_, limit);
         continue;
       }
+      // Only a distance below `bound` can change the answer, so the routine may leave out what its
+      // cheap bounds put beyond it; a pair found wholly beyond it counts as filtered.
       const TrianglePairResult t =
-          triangleDistanceUpTo(cornersA[0], cornersA[1], cornersA[2], q[0], q[1], q[2], enoughDistance());
+          triangleDistanceBelow(cornersA[0], cornersA[1], cornersA[2], q[0], q[1], q[2], enoughDistance(), bound);
       ++counters_.trianglePairsTested;
+      leftOutAbove(t.distance, bound, limit);
       offer(t.pointOnA, t.pointOnB, t.distance, ta, false, orderB_[j], false);
       if (done_) return;
       limit = pruneBound();

@@ -98,15 +98,37 @@ Vec3 closestOnFace(const Vec3& p, const Face& f) {
   return d12 <= d20 ? q12 : q20;
 }
 
-/// Does segment [p, q] seem to meet the face, crossing its plane? Decided by signs only: p and q
-/// on opposite sides of the plane (or one on it) and the segment's line passing inside all three
-/// edges (equal signs of the three triple products). The crossing point is returned in `hit`.
-/// Segments lying in the plane are left to the edge–edge and vertex–face candidates, which realize
-/// their distance.
-bool segmentPiercesFace(const Vec3& p, const Vec3& q, const Face& f, Vec3& hit) {
+/// Heights of three points over the face's plane, along its (unnormalized, accurate) normal: the
+/// side each lies on, for the crossing test, and its distance from the plane times |normal|, for
+/// the pruning test. Zero for a face without interior.
+struct Heights {
+  double h[3] = {0.0, 0.0, 0.0};
+  Heights(const Vec3 p[3], const Face& f) {
+    if (!f.hasInterior()) return;
+    for (int i = 0; i < 3; ++i) h[i] = (p[i] - f.origin).dot(f.normal);
+  }
+};
+
+/// Is every point of the face at least sqrt(limit2) from p (at \p height over its plane)? Proven
+/// by the plane or by the corners' box: a cheap test that spares closestOnFace for the corners that
+/// cannot give a nearer candidate. Rounding in the two bounds is of order eps times the triangles'
+/// extent, far below the slack callers add to the limits they pass.
+bool faceFartherThan(const Vec3& p, double height, const Face& f, double limit2) {
+  // Squared, as offerEdgeEdge compares: a right side that overflows proves nothing.
+  const double reach2 = limit2 * f.normal2;
+  if (f.hasInterior() && reach2 < std::numeric_limits<double>::infinity() && height * height >= reach2) return true;
+  const Vec3 r = p - f.origin;
+  const Vec3 outside = r - r.cwiseMax(f.boxLow).cwiseMin(f.boxHigh);
+  return outside.squaredNorm() >= limit2;
+}
+
+/// Does segment [p, q] (at heights dp, dq over the face's plane) seem to meet the face, crossing
+/// its plane? Decided by signs only: p and q on opposite sides of the plane (or one on it) and the
+/// segment's line passing inside all three edges (equal signs of the three triple products). The
+/// crossing point is returned in `hit`. Segments lying in the plane are left to the edge–edge and
+/// vertex–face candidates, which realize their distance.
+bool segmentPiercesFace(const Vec3& p, const Vec3& q, double dp, double dq, const Face& f, Vec3& hit) {
   if (!f.hasInterior()) return false;
-  const double dp = (p - f.origin).dot(f.normal);
-  const double dq = (q - f.origin).dot(f.normal);
   if ((dp > 0.0 && dq > 0.0) || (dp < 0.0 && dq < 0.0) || (dp == 0.0 && dq == 0.0)) return false;
   const Vec3 a = f.origin, b = f.corner(1), c = f.corner(2);
   const Vec3 pq = q - p;
@@ -142,7 +164,7 @@ struct Best {
 /// along the edges cancels and what is left is second order (issue 3's first documented failure;
 /// test_triangle_distance's near-parallel family, seed 103, case 2808 was 80 % off without it).
 /// Boundary minima are endpoint-to-segment pairs, covered by the vertex–face candidates.
-void offerEdgeEdge(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2, Best& best) {
+void offerEdgeEdge(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2, double ceiling2, Best& best) {
   const Vec3 d1 = q1 - p1;
   const Vec3 d2 = q2 - p2;
   const Vec3 m = d1.cross(d2);
@@ -151,6 +173,17 @@ void offerEdgeEdge(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q
   const double len2 = d2.squaredNorm();
   if (m2 <= tolerance::kParallelSine2 * len1 * len2 || m2 <= 0.0) return;
   const Vec3 r = p2 - p1;
+  // Along m the two segments project to intervals, and their gap over |m| bounds the segments'
+  // distance from below: edges already at least as far apart as the ceiling (or the best so far)
+  // cannot matter. For the exact common perpendicular the intervals are the points r.m and 0 (the
+  // lines' distance); the computed m is off by about eps |d1| |d2| per component, a large part of
+  // it for nearly parallel edges, so the segments' own spans d1.m and d2.m are taken off (without
+  // them issue 3's near-parallel family found the bound 1e-10 of the diagonal too high).
+  // Compared squared, without a square root; a right side that overflows (coordinates near
+  // kMaxCoordinate, or no limit yet) prunes nothing.
+  const double gap = std::abs(r.dot(m)) - std::abs(d1.dot(m)) - std::abs(d2.dot(m));
+  const double reach2 = std::min(ceiling2, best.distance2) * m2;
+  if (gap > 0.0 && reach2 < std::numeric_limits<double>::infinity() && gap * gap >= reach2) return;
   double s = r.cross(d2).dot(m) / m2;
   if (s <= 0.0 || s >= 1.0) return;
   const double t = (p1 + s * d1 - p2).dot(d2) / len2;
@@ -166,8 +199,8 @@ void offerEdgeEdge(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q
 // the minimum distance of two disjoint triangles is attained at a vertex of one and the face of
 // the other, or between two edges; intersecting triangles have an edge of one crossing the other
 // (or lie in one plane, where an edge–edge crossing or a contained vertex gives distance ~0).
-TrianglePairResult triangleDistanceUpTo(const Vec3& a0In, const Vec3& a1In, const Vec3& a2In, const Vec3& b0In,
-                                        const Vec3& b1In, const Vec3& b2In, double enough) {
+TrianglePairResult triangleDistanceBelow(const Vec3& a0In, const Vec3& a1In, const Vec3& a2In, const Vec3& b0In,
+                                         const Vec3& b1In, const Vec3& b2In, double enough, double ceiling) {
   // Work relative to a0: coordinates far from the origin (issue 3's large offsets) then lose
   // nothing in the differences that follow, as nearby doubles subtract exactly.
   const Vec3& origin = a0In;
@@ -183,6 +216,9 @@ TrianglePairResult triangleDistanceUpTo(const Vec3& a0In, const Vec3& a1In, cons
   // below it would be reported as 0 all the same.
   const double stop = enough < 0.0 ? -1.0 : std::max(enough, snap);
   const double stop2 = stop < 0.0 ? -1.0 : stop * stop;
+
+  // Candidates proven no nearer than this are not worked out (squared; infinite: none pruned).
+  const double ceiling2 = ceiling < std::numeric_limits<double>::infinity() ? ceiling * ceiling : ceiling;
 
   Best best;
   auto finish = [&] {
@@ -200,29 +236,39 @@ TrianglePairResult triangleDistanceUpTo(const Vec3& a0In, const Vec3& a1In, cons
   // triangle form a candidate (of length ~0 when the crossing is real). Offered, not trusted:
   // for an edge lying in the other's plane the signs of the test are noise, and a false crossing
   // then only offers a real, longer distance.
+  const Heights overB(a, faceB), overA(b, faceA);
   Vec3 hit;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
-    if (segmentPiercesFace(a[i], a[j], faceB, hit)) {
+    if (segmentPiercesFace(a[i], a[j], overB.h[i], overB.h[j], faceB, hit)) {
       best.offer(hit, closestOnFace(hit, faceB));
     }
-    if (segmentPiercesFace(b[i], b[j], faceA, hit)) {
+    if (segmentPiercesFace(b[i], b[j], overA.h[i], overA.h[j], faceA, hit)) {
       best.offer(closestOnFace(hit, faceA), hit);
     }
     if (best.distance2 <= stop2) return finish();
   }
 
   for (int i = 0; i < 3; ++i) {
-    best.offer(a[i], closestOnFace(a[i], faceB));
-    best.offer(closestOnFace(b[i], faceA), b[i]);
+    if (!faceFartherThan(a[i], overB.h[i], faceB, std::min(ceiling2, best.distance2))) {
+      best.offer(a[i], closestOnFace(a[i], faceB));
+    }
+    if (!faceFartherThan(b[i], overA.h[i], faceA, std::min(ceiling2, best.distance2))) {
+      best.offer(closestOnFace(b[i], faceA), b[i]);
+    }
   }
   if (best.distance2 <= stop2) return finish();
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      offerEdgeEdge(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3], best);
+      offerEdgeEdge(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3], ceiling2, best);
     }
   }
   return finish();
+}
+
+TrianglePairResult triangleDistanceUpTo(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,
+                                        const Vec3& b2, double enough) {
+  return triangleDistanceBelow(a0, a1, a2, b0, b1, b2, enough, std::numeric_limits<double>::infinity());
 }
 
 TrianglePairResult triangleDistance(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,

@@ -610,5 +610,42 @@ TEST(TriangleDistanceRandom, UpToDecidesLikeTheMinimum) {
   EXPECT_GT(stoppedEarly, 200);
 }
 
+/// triangleDistanceBelow against the oracle, with ceilings on both sides of the minimum: below its
+/// ceiling it is as accurate as triangleDistance; at or beyond it, it never reports less than the
+/// ceiling (nor, when it reports a finite distance, anything its witnesses do not realize), so a
+/// traversal that passes its best answer so far can neither miss a nearer pair nor take a false one.
+TEST(TriangleDistanceRandom, BelowIsExactUnderItsCeilingAndNeverBelowItAbove) {
+  SeededRandom random(112);
+  int under = 0, over = 0, leftOut = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Pairs from overlapping to 0.5 apart, ceilings from half to twice the minimum.
+    const TrianglePair c = closePair(random, random.uniform(-0.2, 0.5));
+    const auto o = reference(c);
+    const double tolerance = kAccuracy * diagonal(c);
+    const double ceiling = i % 5 == 0 ? o.value : o.value * random.uniform(0.5, 2.0);
+    const TrianglePairResult r =
+        triangleDistanceBelow(c.a[0], c.a[1], c.a[2], c.b[0], c.b[1], c.b[2], -1.0, ceiling);
+    ASSERT_FALSE(std::isnan(r.distance)) << describe(c);
+    if (o.value < ceiling - tolerance) {
+      ++under;
+      ASSERT_TRUE(answersLikeOracle(c, r, o, i % 4 == 0)) << "ceiling " << ceiling;
+      continue;
+    }
+    ++over;
+    ASSERT_GE(r.distance, ceiling - tolerance) << "minimum " << o.value << ", ceiling " << ceiling << ": " << describe(c);
+    if (std::isinf(r.distance)) {
+      ++leftOut;
+      continue;
+    }
+    ASSERT_NEAR((r.pointOnA - r.pointOnB).norm(), r.distance, tolerance + kWitnessRounding * largestCoordinate(c));
+    ASSERT_LE(offTriangle(r.pointOnA, c.a), tolerance + kWitnessRounding * largestCoordinate(c)) << describe(c);
+    ASSERT_LE(offTriangle(r.pointOnB, c.b), tolerance + kWitnessRounding * largestCoordinate(c)) << describe(c);
+  }
+  std::printf("under the ceiling %d, at or over it %d, every candidate left out %d\n", under, over, leftOut);
+  EXPECT_GT(under, 3000);
+  EXPECT_GT(over, 3000);
+  EXPECT_GT(leftOut, 500);  // the pruning happens (it is what the function is for)
+}
+
 }  // namespace
 }  // namespace adsd

@@ -31,4 +31,14 @@ TrianglePairResult triangleDistance(const Vec3& a0, const Vec3& a1, const Vec3& 
 TrianglePairResult triangleDistanceUpTo(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0,
                                         const Vec3& b1, const Vec3& b2, double enough);
 
+/// \brief triangleDistanceUpTo that leaves out what cannot come below \p ceiling: candidates
+/// (a corner against the other face, a pair of edges) whose plane, box or line bound already puts
+/// them at or beyond it are not worked out. When the minimum is below \p ceiling (by more than
+/// rounding, of order eps times the triangles' extent) the result is triangleDistanceUpTo's;
+/// otherwise its distance is at least about \p ceiling, and infinite when every candidate was
+/// left out. A traversal that needs only the pairs nearer than its best answer so far passes that
+/// answer (with its roundoff slack) and skips most of the work on pairs that cannot improve it.
+TrianglePairResult triangleDistanceBelow(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0,
+                                         const Vec3& b1, const Vec3& b2, double enough, double ceiling);
+
 }  // namespace adsd
