@@ -43,19 +43,21 @@ bool ArmMotionValidator::certify(const ob::State* s1, const ob::State* s2, doubl
   // Distances are trusted up to kDistanceTrustFraction of the scene's scale; each clearance gives
   // that away, and the margin, so that rounding never certifies a touching motion.
   const double giveAway = checker_->safetyMargin() + kDistanceTrustFraction * checker_->scale();
-  // No segment needs more clearance than the whole motion's bound: ask for no more.
-  const double cap = giveAway + total + kDistanceTrustFraction * checker_->scale();
+  // A state's clearance is needed only up to the bound of the segments it ends: above
+  // M x (their length), one end alone proves them. Asking for no more lets the distance queries
+  // stop early (clearanceUpTo's cap), which matters most deep in the bisection.
+  const double allowance = kDistanceTrustFraction * checker_->scale();
   ob::State* state = si_->allocState();
-  const auto effective = [&](const ob::State* s) {
+  const auto effective = [&](const ob::State* s, double segmentLength) {
     clearanceQueries_.fetch_add(1, std::memory_order_relaxed);
-    return checker_->clearanceUpTo(s, cap) - giveAway;
+    return checker_->clearanceUpTo(s, giveAway + total * segmentLength + allowance) - giveAway;
   };
   struct Segment {
     double ta, ca, tb, cb;
   };
   std::vector<Segment> stack;
-  const double c0 = effective(s1);
-  const double c1 = effective(s2);
+  const double c0 = effective(s1, 1.0);
+  const double c1 = effective(s2, 1.0);
   bool ok = c0 > 0.0;
   if (ok) stack.push_back({0.0, c0, 1.0, c1});
   while (ok && !stack.empty()) {
@@ -74,7 +76,7 @@ bool ArmMotionValidator::certify(const ob::State* s1, const ob::State* s2, doubl
     }
     const double tm = 0.5 * (s.ta + s.tb);
     si_->getStateSpace()->interpolate(s1, s2, tm, state);
-    const double cm = effective(state);
+    const double cm = effective(state, 0.5 * length);
     if (!(cm > 0.0)) {
       ok = false;
       break;
