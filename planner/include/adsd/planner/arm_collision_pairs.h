@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// \brief Which pairs of an arm's links are checked against each other (self-collision), and the
+/// SRDF `<disable_collisions>` entries that switch pairs off.
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "adsd/planner/arm_model.h"
+
+namespace adsd::planner {
+
+/// \brief A symmetric matrix over an arm's links: which link pairs a checker tests against each
+/// other. Only links with collision geometry can be in an enabled pair.
+class ArmCollisionPairs {
+ public:
+  /// \brief Every pair of distinct links that both have collision geometry, except the pairs
+  /// disabledByAdjacency() finds: links that touch by design at a joint, or cannot move relative
+  /// to each other.
+  explicit ArmCollisionPairs(const ArmModel& model);
+
+  bool enabled(std::size_t a, std::size_t b) const { return enabled_[a * links_ + b]; }
+  /// \brief Switches the pair off (both orders); \p reason is kept for writeSrdf().
+  void disable(std::size_t a, std::size_t b, const std::string& reason);
+  /// \brief The enabled pairs, a < b, in increasing order.
+  std::vector<std::pair<std::size_t, std::size_t>> enabledPairs() const;
+  /// \brief The disabled pairs between links with geometry, a < b, with their reasons.
+  struct Disabled {
+    std::size_t a, b;
+    std::string reason;
+  };
+  const std::vector<Disabled>& disabled() const { return disabled_; }
+
+ private:
+  std::size_t links_;
+  std::vector<bool> enabled_;
+  std::vector<Disabled> disabled_;
+};
+
+/// \brief Pairs never checked because the kinematic tree joins them (reason "Adjacent"):
+///  - a parent link and its child link, through any joint;
+///  - links joined only through fixed joints (a rigid group: their distance never changes);
+///  - a link of one rigid group and a link of the group its group hangs from through one
+///    movable joint (links without geometry in a rigid group are skipped over this way, as MoveIt's
+///    setup assistant does).
+std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmModel& model);
+
+/// \brief Disables every pair of an SRDF file's `<disable_collisions link1="" link2="" reason=""/>`
+/// entries (MoveIt's format; other elements are ignored). Throws adsd::InputError naming the file
+/// and line when it is not XML, has no `<robot>` element, or names a link the model lacks.
+void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, ArmCollisionPairs& pairs);
+
+/// \brief Writes the disabled pairs as an SRDF file (a `<robot name="">` with one
+/// `<disable_collisions>` per pair), which disablePairsFromSrdf() and MoveIt read. Throws
+/// adsd::InputError when the file cannot be written.
+void writeSrdf(const ArmModel& model, const ArmCollisionPairs& pairs, const std::string& srdfPath);
+
+}  // namespace adsd::planner

@@ -1,0 +1,87 @@
+#pragma once
+/// \file
+/// \brief An articulated robot read from a URDF file: a tree of links joined by revolute,
+/// continuous, prismatic and fixed joints, each link with its collision geometry as one mesh in
+/// the link's frame (issue 17).
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "adsd/mesh.h"
+
+namespace adsd::planner {
+
+/// \brief The joint types an arm may have. Floating and planar joints are refused on reading:
+/// their configuration is not one number.
+enum class ArmJointType { revolute, continuous, prismatic, fixed };
+
+/// \brief One joint, as URDF defines it: the child link's frame is
+///   parentLinkFrame * origin * motion(q),
+/// where motion(q) turns by q radians about \p axis (revolute, continuous) or moves q metres
+/// along it (prismatic), and is the identity for a fixed joint.
+struct ArmJoint {
+  std::string name;
+  ArmJointType type = ArmJointType::fixed;
+  std::size_t parentLink = 0;  ///< index into ArmModel::links
+  std::size_t childLink = 0;   ///< index into ArmModel::links
+  Pose origin = Pose::Identity();   ///< joint frame in the parent link's frame (URDF <origin>)
+  Vec3 axis = Vec3::UnitZ();        ///< unit vector, joint frame (URDF <axis>, normalized)
+  double lower = 0.0;  ///< radians or metres; -pi for a continuous joint
+  double upper = 0.0;  ///< radians or metres; +pi for a continuous joint
+  /// Position of this joint in the joint vector, or -1 for a fixed joint.
+  int active = -1;
+};
+
+/// \brief One link: its name, the joint that carries it, and its collision geometry.
+struct ArmLink {
+  std::string name;
+  /// Index into ArmModel::joints of the joint whose child this link is; -1 for the root.
+  int parentJoint = -1;
+  /// Every <collision> element of the link, merged into one mesh in the link's frame, or none
+  /// when the link has no collision geometry (such a link is never checked). Visual geometry is
+  /// never used.
+  std::optional<Mesh> collision;
+};
+
+/// \brief An articulated robot.
+///
+/// Links are stored depth first from the root, children in the order of their joints in the URDF
+/// file, so a link's parent always comes before it. joints[k] is the joint whose child is
+/// links[k + 1]. The joint vector holds one coordinate per non-fixed joint, in that same order
+/// (depth first from the root, URDF order among siblings); jointIndex() finds one by name.
+/// Read-only once built, so any number of threads may use it.
+struct ArmModel {
+  std::string name;        ///< the URDF's robot name
+  std::string sourceFile;  ///< the URDF file it was read from (for messages)
+  std::vector<ArmLink> links;
+  std::vector<ArmJoint> joints;
+  /// activeJoints[i]: index into joints of joint-vector coordinate i.
+  std::vector<std::size_t> activeJoints;
+
+  std::size_t dof() const { return activeJoints.size(); }
+  /// \brief Joint-vector coordinate of the joint named \p name; throws InputError when there is
+  /// no such non-fixed joint.
+  std::size_t jointIndex(const std::string& name) const;
+  /// \brief Index of the link named \p name; throws InputError when there is none.
+  std::size_t linkIndex(const std::string& name) const;
+  /// \brief Builds every collision mesh's sub-mesh tree (Mesh::buildHierarchy), for checkers that
+  /// query the same rigid links many times. Call before sharing the model.
+  void buildHierarchies();
+};
+
+/// \brief Reads an arm from a URDF file (urdfdom).
+///
+/// Mesh file names are resolved as follows: `package://NAME/REST` against each directory DIR of
+/// \p packageSearchPath in turn, first DIR/NAME/REST, then DIR/REST; `file://PATH` as PATH; any
+/// other name as a path, relative to the URDF file's folder when it is relative. Meshes are read
+/// with adsd::io::loadMesh and scaled by their `scale` attribute; box, cylinder and sphere
+/// primitives become meshes (boxMesh, cylinderMesh, sphereMesh).
+///
+/// Throws adsd::InputError naming the file (and the link or joint) when the file does not parse,
+/// has a joint cycle or several roots, a floating, planar or unknown joint, a revolute or
+/// prismatic joint without finite limits (lower <= upper), or a mesh that cannot be found or read.
+ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath = {});
+
+}  // namespace adsd::planner

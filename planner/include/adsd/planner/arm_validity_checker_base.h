@@ -1,0 +1,110 @@
+#pragma once
+/// \file
+/// \brief The part every arm checker shares (ours and FCL's): the OMPL interface, forward
+/// kinematics into per-thread scratch, the broad phase over link × obstacle and link × link pairs,
+/// and the counters.
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/StateValidityChecker.h>
+
+#include "adsd/planner/arm_scene.h"
+#include "adsd/planner/arm_state_space.h"
+#include "adsd/planner/query_counters.h"
+
+namespace adsd::planner {
+
+/// \brief A state validity checker for an arm: every checked link against every obstacle, and the
+/// enabled link pairs against each other.
+///
+/// A state is valid when it lies within the space's bounds and every such distance is above the
+/// safety margin (default 0: touching is a collision). The space must be an ArmStateSpace of the
+/// scene's model. All const methods are thread-safe and take no lock: the joint vector, the link
+/// poses and the pair list live in thread_local scratch, and the counters are atomic.
+///
+/// Broad phase (as RigidBodyValidityChecker's): each link's mesh has a ball and a box in its link
+/// frame, each obstacle part a box in the world frame. A pair's lower bound is the larger of its
+/// ball and box gaps (for link × link: ball–ball and box–box; the posed box is the world box
+/// around the link box). Pairs whose bound exceeds the current bound (margin, or best distance so
+/// far) by more than roundoff are skipped; the rest are visited nearest first.
+///
+/// Bodies: the narrow phase sees body indices, links with geometry first (body b < linkBodies(),
+/// link linkOfBody(b)), then the obstacle parts.
+class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
+ public:
+  /// \brief Throws adsd::InputError when the space is not an ArmStateSpace with the model's joint
+  /// count, or the margin is negative or not finite.
+  ArmValidityCheckerBase(const ompl::base::SpaceInformationPtr& si, std::shared_ptr<const ArmScene> scene,
+                         double safetyMargin);
+
+  /// \brief Bounds check, then threshold queries: is every checked distance above the margin.
+  bool isValid(const ompl::base::State* state) const final;
+  /// \brief \p dist is clearance(state); valid when within bounds and dist > safetyMargin().
+  bool isValid(const ompl::base::State* state, double& dist) const final;
+  /// \brief The smallest distance over the checked pairs (link–obstacle and enabled link–link).
+  double clearance(const ompl::base::State* state) const final;
+  /// \brief A lower bound on clearance(state) that equals it when below \p cap and is at least
+  /// min(clearance, cap) otherwise. Counted as a clearance query.
+  double clearanceUpTo(const ompl::base::State* state, double cap) const;
+
+  double safetyMargin() const { return safetyMargin_; }
+  /// \brief The scene's length scale: the diagonal of the box around the obstacles and the arm's
+  /// reach (the arm's links placed anywhere within reach of the root).
+  double scale() const { return scale_; }
+  const ArmScene& scene() const { return *scene_; }
+  const ArmModel& model() const { return *scene_->model; }
+  const ArmStateSpace& armSpace() const { return *space_; }
+
+  QueryCounts counts() const { return counters_.snapshot(); }
+  void resetCounts() { counters_.reset(); }
+
+  std::size_t linkBodies() const { return linkOfBody_.size(); }
+  std::size_t linkOfBody(std::size_t body) const { return linkOfBody_[body]; }
+  /// \brief The mesh of body \p b (a link's collision mesh, or an obstacle part).
+  const Mesh& bodyMesh(std::size_t b) const;
+
+ protected:
+  /// \brief What one pair's distance query established.
+  struct PairDistance {
+    double lower = 0.0;       ///< a lower bound on the pair's distance (exact when exact)
+    bool reachedCap = false;  ///< the pair's distance is proven >= the cap it was given
+  };
+  /// \brief Are bodies \p a and \p b, at these world poses, farther apart than \p margin?
+  virtual bool pairSeparatedAbove(std::size_t a, const Pose& poseA, std::size_t b, const Pose& poseB,
+                                  double margin) const = 0;
+  /// \brief The pair's distance, as precise as the checker's clearance setting, needed only below
+  /// \p cap (infinite: always needed).
+  virtual PairDistance pairDistance(std::size_t a, const Pose& poseA, std::size_t b, const Pose& poseB,
+                                    double cap) const = 0;
+
+  std::shared_ptr<const ArmScene> scene_;
+
+ private:
+  struct PairBound {
+    double lower;
+    std::size_t a, b;
+  };
+  /// Joint vector and link poses for the state, in the calling thread's scratch.
+  const std::vector<Pose>& posesFor(const ompl::base::State* state) const;
+  double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
+  bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
+  double distanceUpTo(const std::vector<Pose>& linkPoses, double cap) const;
+
+  const ArmStateSpace* space_;
+  double safetyMargin_;
+  double scale_;
+  std::vector<std::size_t> linkOfBody_;
+  std::vector<Vec3> ballCentres_;  ///< link frame, per link body
+  std::vector<double> ballRadii_;
+  std::vector<Eigen::AlignedBox3d> linkBoxes_;  ///< link frame, per link body
+  std::vector<std::pair<std::size_t, std::size_t>> selfPairs_;  ///< link bodies, enabled pairs
+  std::vector<Vec3> obstacleCentres_, obstacleHalves_;  ///< world frame, per obstacle part
+  mutable QueryCounters counters_;
+};
+
+}  // namespace adsd::planner

@@ -1,0 +1,309 @@
+#include "adsd/planner/arm_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <tinyxml.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include "adsd/error.h"
+#include "adsd/io/load_mesh.h"
+#include "adsd/planner/primitive_meshes.h"
+
+namespace adsd::planner {
+
+namespace fs = std::filesystem;
+
+std::size_t ArmModel::jointIndex(const std::string& jointName) const {
+  for (std::size_t i = 0; i < activeJoints.size(); ++i) {
+    if (joints[activeJoints[i]].name == jointName) return i;
+  }
+  throw InputError(sourceFile + ": no movable joint named '" + jointName + "'");
+}
+
+std::size_t ArmModel::linkIndex(const std::string& linkName) const {
+  for (std::size_t i = 0; i < links.size(); ++i) {
+    if (links[i].name == linkName) return i;
+  }
+  throw InputError(sourceFile + ": no link named '" + linkName + "'");
+}
+
+void ArmModel::buildHierarchies() {
+  for (ArmLink& link : links) {
+    if (link.collision && !link.collision->hierarchy()) link.collision->buildHierarchy();
+  }
+}
+
+namespace {
+
+std::string readWholeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the URDF file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in.good() && !in.eof()) throw InputError(path + ": cannot read the URDF file");
+  return text.str();
+}
+
+/// What urdfdom does not say clearly (it logs a line and returns null), checked on the XML first
+/// so that the error names the joint or link: joint types, the tree's shape, and the file order
+/// of the joints (urdfdom keeps joints in a map by name, which loses it).
+struct JointOrder {
+  std::map<std::string, int> rank;  ///< joint name -> position in the file
+};
+
+JointOrder checkTreeShape(const std::string& path, const std::string& text) {
+  TiXmlDocument doc;
+  doc.Parse(text.c_str());
+  if (doc.Error()) {
+    throw InputError(path + ":" + std::to_string(doc.ErrorRow()) + ": not XML: " + doc.ErrorDesc());
+  }
+  const TiXmlElement* robot = doc.FirstChildElement("robot");
+  if (!robot) throw InputError(path + ": no <robot> element: not a URDF file");
+  JointOrder order;
+  std::set<std::string> linkNames;
+  for (const TiXmlElement* l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link")) {
+    const char* name = l->Attribute("name");
+    if (!name) throw InputError(path + ":" + std::to_string(l->Row()) + ": a <link> without a name");
+    linkNames.insert(name);
+  }
+  std::map<std::string, std::string> parentJointOf;  // child link -> joint
+  int rank = 0;
+  for (const TiXmlElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+    const std::string where = path + ":" + std::to_string(j->Row());
+    const char* name = j->Attribute("name");
+    if (!name) throw InputError(where + ": a <joint> without a name");
+    const char* type = j->Attribute("type");
+    const std::string t = type ? type : "";
+    if (t == "floating" || t == "planar") {
+      throw InputError(where + ": joint '" + name + "' is " + t +
+                       ": only revolute, continuous, prismatic and fixed joints are supported");
+    }
+    if (t != "revolute" && t != "continuous" && t != "prismatic" && t != "fixed") {
+      throw InputError(where + ": joint '" + name + "' has unknown type '" + t +
+                       "' (revolute, continuous, prismatic or fixed)");
+    }
+    const TiXmlElement* parent = j->FirstChildElement("parent");
+    const TiXmlElement* child = j->FirstChildElement("child");
+    const char* parentLink = parent ? parent->Attribute("link") : nullptr;
+    const char* childLink = child ? child->Attribute("link") : nullptr;
+    if (!parentLink || !childLink) throw InputError(where + ": joint '" + std::string(name) + "' needs <parent link=> and <child link=>");
+    for (const char* l : {parentLink, childLink}) {
+      if (!linkNames.count(l)) throw InputError(where + ": joint '" + std::string(name) + "' names link '" + l + "', which is not defined");
+    }
+    if (std::string(parentLink) == childLink) {
+      throw InputError(where + ": joint '" + std::string(name) + "' joins link '" + parentLink + "' to itself: a joint cycle");
+    }
+    const auto [it, fresh] = parentJointOf.emplace(childLink, name);
+    if (!fresh) {
+      throw InputError(where + ": link '" + std::string(childLink) + "' is the child of joints '" + it->second +
+                       "' and '" + name + "': a joint cycle (a URDF is a tree)");
+    }
+    if (!order.rank.emplace(name, rank++).second) throw InputError(where + ": two joints are named '" + std::string(name) + "'");
+  }
+  std::vector<std::string> roots;
+  for (const std::string& l : linkNames) {
+    if (!parentJointOf.count(l)) roots.push_back(l);
+  }
+  if (roots.empty()) throw InputError(path + ": every link has a parent: a joint cycle, no root link");
+  if (roots.size() > 1) {
+    throw InputError(path + ": " + std::to_string(roots.size()) + " root links ('" + roots[0] + "', '" + roots[1] +
+                     "'...): the links must form one tree");
+  }
+  // One root and one parent per link: the links reachable from the root are a tree; any link not
+  // reachable sits on a cycle.
+  std::map<std::string, std::vector<std::string>> children;
+  for (const TiXmlElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
+    children[j->FirstChildElement("parent")->Attribute("link")].push_back(j->FirstChildElement("child")->Attribute("link"));
+  }
+  std::set<std::string> reached;
+  std::vector<std::string> stack = {roots[0]};
+  while (!stack.empty()) {
+    const std::string l = stack.back();
+    stack.pop_back();
+    reached.insert(l);
+    for (const std::string& c : children[l]) stack.push_back(c);
+  }
+  for (const std::string& l : linkNames) {
+    if (!reached.count(l)) throw InputError(path + ": link '" + l + "' lies on a joint cycle (joint '" + parentJointOf[l] + "')");
+  }
+  return order;
+}
+
+Pose toPose(const urdf::Pose& p) {
+  Pose pose = Pose::Identity();
+  pose.linear() = Eigen::Quaterniond(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z).normalized().toRotationMatrix();
+  pose.translation() = Vec3(p.position.x, p.position.y, p.position.z);
+  return pose;
+}
+
+/// Resolves a mesh file name (see readUrdf()); throws naming the link when nothing is found.
+std::string resolveMeshPath(const std::string& uri, const fs::path& urdfDir, const std::vector<std::string>& search,
+                            const std::string& where) {
+  const std::string package = "package://", file = "file://";
+  if (uri.rfind(package, 0) == 0) {
+    const std::string rest = uri.substr(package.size());
+    const std::size_t slash = rest.find('/');
+    const std::string name = rest.substr(0, slash);
+    const std::string inside = slash == std::string::npos ? "" : rest.substr(slash + 1);
+    for (const std::string& dir : search) {
+      for (const fs::path& candidate : {fs::path(dir) / name / inside, fs::path(dir) / inside}) {
+        std::error_code ec;
+        if (fs::is_regular_file(candidate, ec)) return candidate.string();
+      }
+    }
+    std::string tried;
+    for (const std::string& dir : search) tried += (tried.empty() ? "" : ", ") + dir;
+    throw InputError(where + ": mesh '" + uri + "' not found in the package search path (" +
+                     (tried.empty() ? std::string("empty: give the directories that hold package '") + name + "'" : tried) + ")");
+  }
+  fs::path p = uri.rfind(file, 0) == 0 ? fs::path(uri.substr(file.size())) : fs::path(uri);
+  if (p.is_relative()) p = urdfDir / p;
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec)) throw InputError(where + ": mesh '" + uri + "' not found (" + p.string() + ")");
+  return p.string();
+}
+
+/// One <collision> element's geometry as a mesh in its own frame.
+Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::vector<std::string>& search,
+                  const std::string& where) {
+  switch (g.type) {
+    case urdf::Geometry::BOX: {
+      const auto& b = static_cast<const urdf::Box&>(g);
+      return boxMesh(Vec3(b.dim.x, b.dim.y, b.dim.z), where + " box");
+    }
+    case urdf::Geometry::CYLINDER: {
+      const auto& c = static_cast<const urdf::Cylinder&>(g);
+      return cylinderMesh(c.radius, c.length, where + " cylinder");
+    }
+    case urdf::Geometry::SPHERE:
+      return sphereMesh(static_cast<const urdf::Sphere&>(g).radius, where + " sphere");
+    case urdf::Geometry::MESH: {
+      const auto& m = static_cast<const urdf::Mesh&>(g);
+      const std::string path = resolveMeshPath(m.filename, urdfDir, search, where);
+      Mesh loaded = [&] {
+        try {
+          return io::loadMesh(path);
+        } catch (const InputError& e) {
+          throw InputError(where + ": mesh '" + m.filename + "': " + e.what());
+        }
+      }();
+      const Vec3 scale(m.scale.x, m.scale.y, m.scale.z);
+      if (scale == Vec3::Ones()) return loaded;
+      std::vector<Vec3> v = loaded.vertices();
+      for (Vec3& p : v) p = p.cwiseProduct(scale);
+      return Mesh(std::move(v), loaded.triangles(), loaded.name());
+    }
+  }
+  throw InputError(where + ": collision geometry of unknown type");
+}
+
+/// Every <collision> element of a link, placed by its origin, in one mesh (link frame).
+std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& urdfDir,
+                                      const std::vector<std::string>& search, const std::string& path) {
+  std::vector<urdf::CollisionSharedPtr> elements = link.collision_array;
+  if (elements.empty() && link.collision) elements.push_back(link.collision);
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+  for (const urdf::CollisionSharedPtr& c : elements) {
+    if (!c || !c->geometry) continue;
+    const std::string where = path + ": link '" + link.name + "'";
+    const Mesh part = geometryMesh(*c->geometry, urdfDir, search, where);
+    const Pose origin = toPose(c->origin);
+    const auto offset = static_cast<std::uint32_t>(vertices.size());
+    for (const Vec3& p : part.vertices()) vertices.push_back(origin * p);
+    for (const TriangleIndices& t : part.triangles()) triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  if (triangles.empty()) return std::nullopt;
+  return Mesh(std::move(vertices), std::move(triangles), link.name);
+}
+
+ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t childLink, const std::string& urdfPath) {
+  ArmJoint j;
+  j.name = uj.name;
+  j.parentLink = parentLink;
+  j.childLink = childLink;
+  j.origin = toPose(uj.parent_to_joint_origin_transform);
+  const std::string where = urdfPath + ": joint '" + j.name + "'";
+  switch (uj.type) {
+    case urdf::Joint::REVOLUTE: j.type = ArmJointType::revolute; break;
+    case urdf::Joint::CONTINUOUS: j.type = ArmJointType::continuous; break;
+    case urdf::Joint::PRISMATIC: j.type = ArmJointType::prismatic; break;
+    case urdf::Joint::FIXED: j.type = ArmJointType::fixed; break;
+    default: throw InputError(where + ": unsupported joint type");  // refused by checkTreeShape already
+  }
+  if (j.type != ArmJointType::fixed) {
+    const Vec3 axis(uj.axis.x, uj.axis.y, uj.axis.z);
+    if (!(axis.norm() > 0.0) || !axis.allFinite()) throw InputError(where + ": the axis must be a non-zero vector");
+    j.axis = axis.normalized();
+  }
+  if (j.type == ArmJointType::continuous) {
+    j.lower = -std::acos(-1.0);
+    j.upper = std::acos(-1.0);
+  } else if (j.type != ArmJointType::fixed) {
+    if (!uj.limits) throw InputError(where + ": a revolute or prismatic joint needs <limit lower= upper=>");
+    j.lower = uj.limits->lower;
+    j.upper = uj.limits->upper;
+    if (!std::isfinite(j.lower) || !std::isfinite(j.upper) || j.lower > j.upper) {
+      throw InputError(where + ": limits must be finite with lower <= upper, got [" + std::to_string(j.lower) + ", " +
+                       std::to_string(j.upper) + "]");
+    }
+  }
+  return j;
+}
+
+}  // namespace
+
+ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath) {
+  const std::string text = readWholeFile(urdfPath);
+  const JointOrder order = checkTreeShape(urdfPath, text);
+  const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(text);
+  if (!urdf || !urdf->getRoot()) throw InputError(urdfPath + ": urdfdom cannot read this URDF (its message is above)");
+  const fs::path urdfDir = fs::absolute(fs::path(urdfPath)).parent_path();
+
+  ArmModel model;
+  model.name = urdf->getName();
+  model.sourceFile = urdfPath;
+  // Depth first from the root, children in file order of their joints. A joint is numbered when
+  // its child link is visited, so that joints[k] carries links[k + 1].
+  struct Visit {
+    urdf::LinkConstSharedPtr link;
+    std::size_t parentLink;  // unused for the root
+  };
+  std::vector<Visit> stack = {{urdf->getRoot(), 0}};
+  while (!stack.empty()) {
+    const Visit visit = stack.back();
+    stack.pop_back();
+    const std::size_t linkIndex = model.links.size();
+    ArmLink link;
+    link.name = visit.link->name;
+    if (linkIndex > 0) {
+      model.joints.push_back(convertJoint(*visit.link->parent_joint, visit.parentLink, linkIndex, urdfPath));
+      link.parentJoint = static_cast<int>(model.joints.size() - 1);
+      if (model.joints.back().type != ArmJointType::fixed) {
+        model.activeJoints.push_back(model.joints.size() - 1);
+        model.joints.back().active = static_cast<int>(model.activeJoints.size() - 1);
+      }
+    }
+    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath);
+    model.links.push_back(std::move(link));
+
+    std::vector<urdf::JointSharedPtr> childJoints = visit.link->child_joints;
+    std::sort(childJoints.begin(), childJoints.end(), [&](const urdf::JointSharedPtr& a, const urdf::JointSharedPtr& b) {
+      return order.rank.at(a->name) < order.rank.at(b->name);
+    });
+    // Pushed in reverse, so that the first child in the file is visited first.
+    for (auto it = childJoints.rbegin(); it != childJoints.rend(); ++it) {
+      stack.push_back({urdf->getLink((*it)->child_link_name), linkIndex});
+    }
+  }
+  return model;
+}
+
+}  // namespace adsd::planner

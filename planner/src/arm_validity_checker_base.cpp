@@ -1,0 +1,206 @@
+#include "adsd/planner/arm_validity_checker_base.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "adsd/error.h"
+#include "adsd/tolerances.h"
+#include "adsd/planner/arm_kinematics.h"
+
+namespace adsd::planner {
+
+namespace {
+
+/// Working memory of the calling thread, shared by every arm checker it runs (a thread runs one
+/// query at a time; nothing in it outlives a query). Sized on first use, then reused: a query
+/// allocates nothing once the vectors have grown.
+struct ArmScratch {
+  std::vector<double> q;
+  std::vector<Pose> linkPoses;
+};
+ArmScratch& threadScratch() {
+  thread_local ArmScratch scratch;
+  return scratch;
+}
+
+/// Gap between two boxes given by centre and half extents (0 when they overlap), squared.
+double boxGap2(const Vec3& c1, const Vec3& h1, const Vec3& c2, const Vec3& h2) {
+  const Vec3 gap = ((c1 - c2).cwiseAbs() - h1 - h2).cwiseMax(0.0);
+  return gap.squaredNorm();
+}
+
+}  // namespace
+
+ArmValidityCheckerBase::ArmValidityCheckerBase(const ompl::base::SpaceInformationPtr& si,
+                                               std::shared_ptr<const ArmScene> scene, double safetyMargin)
+    : ompl::base::StateValidityChecker(si), scene_(std::move(scene)), safetyMargin_(safetyMargin) {
+  if (!scene_ || !scene_->model) throw InputError("arm checker: no scene or no robot model");
+  space_ = dynamic_cast<const ArmStateSpace*>(si->getStateSpace().get());
+  if (!space_ || space_->dof() != scene_->model->dof()) {
+    throw InputError("arm checker: the space must be the ArmStateSpace of " + scene_->model->sourceFile);
+  }
+  if (!std::isfinite(safetyMargin_) || safetyMargin_ < 0.0) {
+    throw InputError("arm checker: the safety margin must be finite and >= 0, got " + std::to_string(safetyMargin_));
+  }
+  const ArmModel& model = *scene_->model;
+  std::vector<std::size_t> bodyOfLink(model.links.size(), SIZE_MAX);
+  // Reach: how far any point of a link can be from the root, for every configuration (a link's
+  // frame is at most |origin| from its parent's, plus the stroke of a prismatic joint).
+  std::vector<double> frameReach(model.links.size(), 0.0);
+  double reach = 0.0;
+  for (std::size_t l = 0; l < model.links.size(); ++l) {
+    const int j = model.links[l].parentJoint;
+    if (j >= 0) {
+      const ArmJoint& joint = model.joints[static_cast<std::size_t>(j)];
+      frameReach[l] = frameReach[joint.parentLink] + joint.origin.translation().norm() +
+                      (joint.type == ArmJointType::prismatic ? std::max(std::abs(joint.lower), std::abs(joint.upper)) : 0.0);
+    }
+    if (!model.links[l].collision) continue;
+    const Mesh& mesh = *model.links[l].collision;
+    bodyOfLink[l] = linkOfBody_.size();
+    linkOfBody_.push_back(l);
+    const Vec3 centre = mesh.bounds().center();
+    double radius = 0.0, farthest = 0.0;
+    for (const TriangleIndices& t : mesh.triangles()) {
+      for (std::uint32_t v : t) {
+        radius = std::max(radius, (mesh.vertices()[v] - centre).norm());
+        farthest = std::max(farthest, mesh.vertices()[v].norm());
+      }
+    }
+    reach = std::max(reach, frameReach[l] + farthest);
+    ballCentres_.push_back(centre);
+    ballRadii_.push_back(radius);
+    linkBoxes_.push_back(mesh.bounds());
+  }
+  for (const auto& [a, b] : scene_->selfPairs.enabledPairs()) selfPairs_.emplace_back(bodyOfLink[a], bodyOfLink[b]);
+  Eigen::AlignedBox3d box(Vec3::Constant(-reach), Vec3::Constant(reach));
+  for (const Mesh& part : scene_->environment) {
+    obstacleCentres_.push_back(part.bounds().center());
+    obstacleHalves_.push_back(0.5 * part.bounds().sizes());
+    box.extend(part.bounds());
+  }
+  scale_ = box.diagonal().norm();
+}
+
+const Mesh& ArmValidityCheckerBase::bodyMesh(std::size_t b) const {
+  return b < linkOfBody_.size() ? *scene_->model->links[linkOfBody_[b]].collision
+                                : scene_->environment[b - linkOfBody_.size()];
+}
+
+const std::vector<Pose>& ArmValidityCheckerBase::posesFor(const ompl::base::State* state) const {
+  ArmScratch& s = threadScratch();
+  s.q.resize(space_->dof());
+  space_->toJoints(state, s.q.data());
+  forwardKinematics(*scene_->model, s.q.data(), s.linkPoses);
+  return s.linkPoses;
+}
+
+double ArmValidityCheckerBase::broadPhase(const std::vector<Pose>& linkPoses, double limit,
+                                          std::vector<PairBound>& pairs) const {
+  pairs.clear();
+  // Roundoff allowance of the bounds below (the core's own, adsd/tolerances.h), at the scene's scale.
+  const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_;
+  const double reach = limit + slack;
+  const double reach2 = reach * reach;
+  const std::size_t n = linkOfBody_.size();
+  // Posed balls and world boxes of the links, on the stack for the usual arm (a few links).
+  constexpr std::size_t kStackLinks = 32;
+  Vec3 ballStack[kStackLinks], boxCentreStack[kStackLinks], boxHalfStack[kStackLinks];
+  std::vector<Vec3> ballHeap, centreHeap, halfHeap;
+  Vec3* ball = ballStack;
+  Vec3* boxCentre = boxCentreStack;
+  Vec3* boxHalf = boxHalfStack;
+  if (n > kStackLinks) {
+    ballHeap.resize(n), centreHeap.resize(n), halfHeap.resize(n);
+    ball = ballHeap.data(), boxCentre = centreHeap.data(), boxHalf = halfHeap.data();
+  }
+  for (std::size_t b = 0; b < n; ++b) {
+    const Pose& pose = linkPoses[linkOfBody_[b]];
+    ball[b] = pose * ballCentres_[b];
+    boxCentre[b] = pose * linkBoxes_[b].center();
+    boxHalf[b] = pose.linear().cwiseAbs() * (0.5 * linkBoxes_[b].sizes());
+  }
+  // Link × obstacle: the box gap first (cheap), the ball gap only for the pairs it keeps.
+  for (std::size_t b = 0; b < n; ++b) {
+    const double ballReach = reach + ballRadii_[b];
+    for (std::size_t e = 0; e < obstacleCentres_.size(); ++e) {
+      const double box2 = boxGap2(boxCentre[b], boxHalf[b], obstacleCentres_[e], obstacleHalves_[e]);
+      if (box2 > reach2) continue;
+      const double ball2 = boxGap2(ball[b], Vec3::Zero(), obstacleCentres_[e], obstacleHalves_[e]);
+      if (ball2 > ballReach * ballReach) continue;
+      pairs.push_back({std::max({0.0, std::sqrt(ball2) - ballRadii_[b], std::sqrt(box2)}), b, n + e});
+    }
+  }
+  // Link × link, the enabled pairs: ball–ball and box–box gaps.
+  for (const auto& [a, b] : selfPairs_) {
+    const double balls = (ball[a] - ball[b]).norm() - ballRadii_[a] - ballRadii_[b];
+    if (balls > reach) continue;
+    const double box2 = boxGap2(boxCentre[a], boxHalf[a], boxCentre[b], boxHalf[b]);
+    if (box2 > reach2) continue;
+    pairs.push_back({std::max({0.0, balls, std::sqrt(box2)}), a, b});
+  }
+  return slack;
+}
+
+bool ArmValidityCheckerBase::separatedAbove(const std::vector<Pose>& linkPoses, double margin) const {
+  thread_local std::vector<PairBound> pairs;
+  broadPhase(linkPoses, margin, pairs);
+  // Nearest first: a collision is most likely with the nearest part.
+  if (pairs.size() > 1) {
+    std::sort(pairs.begin(), pairs.end(), [](const PairBound& x, const PairBound& y) { return x.lower < y.lower; });
+  }
+  const std::size_t n = linkOfBody_.size();
+  for (const PairBound& p : pairs) {
+    const Pose& poseA = linkPoses[linkOfBody_[p.a]];
+    const Pose poseB = p.b < n ? linkPoses[linkOfBody_[p.b]] : Pose::Identity();
+    if (!pairSeparatedAbove(p.a, poseA, p.b, poseB, margin)) return false;
+  }
+  return true;
+}
+
+double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, double cap) const {
+  if (!(cap > 0.0)) return 0.0;  // nothing asked for; 0 is a lower bound of every distance
+  thread_local std::vector<PairBound> pairs;
+  const double slack = broadPhase(linkPoses, cap, pairs);
+  const auto fartherFirst = [](const PairBound& x, const PairBound& y) { return x.lower > y.lower; };
+  std::make_heap(pairs.begin(), pairs.end(), fartherFirst);
+  const std::size_t n = linkOfBody_.size();
+  double best = cap;  // a lower bound on the distance, valid for every pair visited or skipped
+  while (!pairs.empty()) {
+    std::pop_heap(pairs.begin(), pairs.end(), fartherFirst);
+    const PairBound p = pairs.back();
+    pairs.pop_back();
+    if (p.lower > best + slack) break;  // this pair and all left are no nearer than `best`
+    const Pose& poseA = linkPoses[linkOfBody_[p.a]];
+    const Pose poseB = p.b < n ? linkPoses[linkOfBody_[p.b]] : Pose::Identity();
+    const PairDistance d = pairDistance(p.a, poseA, p.b, poseB, best);
+    if (!d.reachedCap) best = std::min(best, d.lower);
+    if (best <= 0.0) break;  // in contact: nothing is nearer
+  }
+  return best;
+}
+
+bool ArmValidityCheckerBase::isValid(const ompl::base::State* state) const {
+  ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::validity);
+  if (!si_->satisfiesBounds(state)) return false;
+  return separatedAbove(posesFor(state), safetyMargin_);
+}
+
+bool ArmValidityCheckerBase::isValid(const ompl::base::State* state, double& dist) const {
+  ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
+  dist = distanceUpTo(posesFor(state), std::numeric_limits<double>::infinity());
+  return si_->satisfiesBounds(state) && dist > safetyMargin_;
+}
+
+double ArmValidityCheckerBase::clearance(const ompl::base::State* state) const {
+  ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
+  return distanceUpTo(posesFor(state), std::numeric_limits<double>::infinity());
+}
+
+double ArmValidityCheckerBase::clearanceUpTo(const ompl::base::State* state, double cap) const {
+  ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
+  return distanceUpTo(posesFor(state), cap);
+}
+
+}  // namespace adsd::planner

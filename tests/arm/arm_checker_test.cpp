@@ -1,0 +1,130 @@
+// The arm checkers (issue 17): clearance worked out by hand on the small arm; on the KR5 among
+// boxes, ours against the brute force (every checked pair's exact distance, no broad phase) and
+// against FCL behind the same broad phase; the query modes.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <ompl/base/ScopedState.h>
+#include <ompl/base/SpaceInformation.h>
+
+#include "adsd/error.h"
+#include "adsd/planner/arm_validity_checker.h"
+#include "adsd/planner/features.h"
+#if ADSD_PLANNER_HAS_FCL
+#include "adsd/planner/fcl_arm_validity_checker.h"
+#endif
+#include "arm_scenes.h"
+
+namespace adsd::planner {
+namespace {
+
+ompl::base::SpaceInformationPtr spaceFor(const ArmModel& model) {
+  auto si = std::make_shared<ompl::base::SpaceInformation>(std::make_shared<ArmStateSpace>(model));
+  return si;
+}
+
+// turn = 0: the tip sphere (radius 0.03, its mesh at most 1 % larger) reaches y = 0.53, the box's
+// face is at y = 0.55: clearance 0.02 less at most 0.0003; everything else is farther (the arm's
+// box ends at y = 0.5, 0.05 away; base to arm: 0.1 vertically).
+TEST(ArmValidityChecker, SmallArmClearanceAsWorkedOutByHand) {
+  const ArmScene scene = test::sliderScene(0.55);
+  auto si = spaceFor(*scene.model);
+  auto checker = std::make_shared<ArmValidityChecker>(si, scene);
+  si->setStateValidityChecker(checker);
+  si->setup();
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  const double q[2] = {0.0, 0.0};
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
+  const double c = checker->clearance(s.get());
+  EXPECT_LE(c, 0.02 + 1e-12);
+  EXPECT_GE(c, 0.02 - 0.0003 - 1e-12);
+  EXPECT_TRUE(checker->isValid(s.get()));
+  EXPECT_EQ(checker->getSpecs().clearanceComputationType, ompl::base::StateValidityCheckerSpecs::EXACT);
+  // Turned by pi: the arm points to -y, 0.45 + 0.1 from the box; the base-arm pair stays 0.1 apart.
+  const double away[2] = {0.0, 3.14159265358979};
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(away, s.get());
+  EXPECT_NEAR(checker->clearance(s.get()), 0.1, 1e-9);
+  // The box moved into the tip's sphere: invalid, clearance 0.
+  const ArmScene touching = test::sliderScene(0.52);
+  auto checker2 = std::make_shared<ArmValidityChecker>(si, touching);
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
+  EXPECT_FALSE(checker2->isValid(s.get()));
+  EXPECT_EQ(checker2->clearance(s.get()), 0.0);
+  // A margin above the clearance makes the first scene's state invalid.
+  auto careful = std::make_shared<ArmValidityChecker>(si, scene, 0.021);
+  EXPECT_FALSE(careful->isValid(s.get()));
+  EXPECT_THROW(ArmValidityChecker(si, scene, -1.0), InputError);
+  EXPECT_THROW(ArmValidityChecker(si, scene, 0.0, DistanceOptions::aboveThreshold(0.1)), InputError);
+}
+
+/// The brute force: every link with geometry against every obstacle part, and every enabled link
+/// pair, by the exact distance query, with the poses from forwardKinematics.
+double bruteForceClearance(const ArmScene& scene, const double* q) {
+  const ArmModel& m = *scene.model;
+  std::vector<Pose> poses;
+  forwardKinematics(m, q, poses);
+  DistanceScratch scratch;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t l = 0; l < m.links.size(); ++l) {
+    if (!m.links[l].collision) continue;
+    for (const Mesh& e : scene.environment) {
+      best = std::min(best, distance(*m.links[l].collision, poses[l], e, Pose::Identity(),
+                                     DistanceOptions::exactDistance(), scratch).distance);
+    }
+  }
+  for (const auto& [a, b] : scene.selfPairs.enabledPairs()) {
+    best = std::min(best, distance(*m.links[a].collision, poses[a], *m.links[b].collision, poses[b],
+                                   DistanceOptions::exactDistance(), scratch).distance);
+  }
+  return best;
+}
+
+TEST(ArmValidityChecker, Kr5ClearanceEqualsTheBruteForceAndFcl) {
+  ADSD_REQUIRE_ROBOTS();
+  const ArmScene scene = test::kr5BoxScene();
+  auto si = spaceFor(*scene.model);
+  auto ours = std::make_shared<ArmValidityChecker>(si, scene);
+  auto capped = std::make_shared<ArmValidityChecker>(si, scene, 0.0, DistanceOptions::cappedAt(0.05));
+  auto tolerant = std::make_shared<ArmValidityChecker>(si, scene, 0.0, DistanceOptions::withTolerance(1e-3, 0.0));
+#if ADSD_PLANNER_HAS_FCL
+  auto fcl = std::make_shared<FclArmValidityChecker>(si, scene);
+#endif
+  const auto* space = si->getStateSpace()->as<ArmStateSpace>();
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  std::vector<double> q(space->dof());
+  std::mt19937_64 rng(3);  // uniform joint vectors within the limits, fixed seed
+  const ArmModel& model = *scene.model;
+  int valid = 0, invalid = 0;
+  for (int i = 0; i < 300; ++i) {
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const ArmJoint& joint = model.joints[model.activeJoints[j]];
+      q[j] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
+    }
+    space->fromJoints(q.data(), s.get());
+    const double expected = bruteForceClearance(scene, q.data());
+    const double got = ours->clearance(s.get());
+    EXPECT_NEAR(got, expected, 1e-9 + 1e-10 * ours->scale()) << "state " << i;
+    EXPECT_EQ(ours->isValid(s.get()), expected > 0.0) << "state " << i;
+    (expected > 0.0 ? valid : invalid)++;
+    const double c = capped->clearance(s.get());
+    EXPECT_LE(c, expected + 1e-12);
+    EXPECT_GE(c, std::min(expected, 0.05) - 1e-9);
+    const double t = tolerant->clearance(s.get());
+    EXPECT_LE(t, expected + 1e-12);
+    EXPECT_GE(t, expected - 1e-3 - 1e-9);
+#if ADSD_PLANNER_HAS_FCL
+    EXPECT_NEAR(fcl->clearance(s.get()), expected, 1e-6) << "state " << i;
+    EXPECT_EQ(fcl->isValid(s.get()), expected > 0.0) << "state " << i;
+#endif
+  }
+  // The sample holds both kinds of states.
+  EXPECT_GT(valid, 30);
+  EXPECT_GT(invalid, 30);
+  std::cout << "KR5 among boxes: " << valid << " valid, " << invalid << " invalid of 300 uniform states\n";
+}
+
+}  // namespace
+}  // namespace adsd::planner

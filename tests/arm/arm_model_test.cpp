@@ -1,0 +1,290 @@
+// The arm model (issue 17): URDF reading, primitives, forward kinematics against poses worked out
+// by hand (the small URDF) and composed independently from the URDF's numbers (the KR5), joint
+// order, disabled pairs (adjacency, SRDF), and one InputError naming the file per bad input.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "adsd/error.h"
+#include "adsd/planner/arm_collision_pairs.h"
+#include "adsd/planner/arm_kinematics.h"
+#include "adsd/planner/arm_model.h"
+#include "adsd/planner/arm_state_space.h"
+#include "adsd/planner/primitive_meshes.h"
+#include "arm_test_data.h"
+#include "scratch_dir.h"
+
+namespace adsd::planner {
+namespace {
+
+using test::armTestData;
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(ArmModel, SmallUrdfHasItsLinksJointsAndOrder) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  EXPECT_EQ(m.name, "slider_arm");
+  ASSERT_EQ(m.links.size(), 4u);
+  EXPECT_EQ(m.links[0].name, "base");
+  EXPECT_EQ(m.links[1].name, "carriage");
+  EXPECT_EQ(m.links[2].name, "arm");
+  EXPECT_EQ(m.links[3].name, "tip");
+  ASSERT_EQ(m.dof(), 2u);
+  EXPECT_EQ(m.jointIndex("slide"), 0u);
+  EXPECT_EQ(m.jointIndex("turn"), 1u);
+  EXPECT_THROW(m.jointIndex("tip_mount"), InputError);  // fixed: not in the joint vector
+  const ArmJoint& slide = m.joints[m.activeJoints[0]];
+  EXPECT_EQ(slide.type, ArmJointType::prismatic);
+  EXPECT_DOUBLE_EQ(slide.lower, -0.1);
+  EXPECT_DOUBLE_EQ(slide.upper, 0.2);
+  const ArmJoint& turn = m.joints[m.activeJoints[1]];
+  EXPECT_EQ(turn.type, ArmJointType::continuous);
+  EXPECT_TRUE(turn.axis.isApprox(Vec3::UnitZ()));  // <axis xyz="0 0 2"/>, normalized
+  for (const ArmLink& l : m.links) ASSERT_TRUE(l.collision.has_value()) << l.name;
+  // Only collision geometry: the base's 9 m visual box is ignored.
+  const Eigen::AlignedBox3d base = m.links[0].collision->bounds();
+  EXPECT_TRUE(base.min().isApprox(Vec3(-0.2, -0.1, 0.0)));
+  EXPECT_TRUE(base.max().isApprox(Vec3(0.2, 0.1, 0.1)));
+}
+
+// Closed form for q = (s, theta): carriage at (s, 0, 0.1); arm frame at (s, 0, 0.2) turned by
+// pi/2 + theta about z; tip at the arm frame + R (0.5, 0, 0.025) = (s - 0.5 sin theta, 0.5 cos theta, 0.225).
+TEST(ArmModel, SmallUrdfForwardKinematicsMatchesTheClosedForm) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  std::vector<Pose> poses;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> s(-0.1, 0.2), theta(-4.0, 4.0);
+  for (int i = 0; i < 100; ++i) {
+    const double q[2] = {s(rng), theta(rng)};
+    forwardKinematics(m, q, poses);
+    ASSERT_EQ(poses.size(), 4u);
+    EXPECT_TRUE(poses[0].isApprox(Pose::Identity()));
+    EXPECT_LT((poses[1].translation() - Vec3(q[0], 0, 0.1)).norm(), 1e-14);
+    EXPECT_LT((poses[1].linear() - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+    const double a = kPi / 2 + q[1];
+    Eigen::Matrix3d r;
+    r << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+    EXPECT_LT((poses[2].translation() - Vec3(q[0], 0, 0.2)).norm(), 1e-14);
+    EXPECT_LT((poses[2].linear() - r).norm(), 1e-14);
+    EXPECT_LT((poses[3].translation() - Vec3(q[0] - 0.5 * std::sin(q[1]), 0.5 * std::cos(q[1]), 0.225)).norm(), 1e-14);
+    EXPECT_LT((poses[3].linear() - r).norm(), 1e-14);
+  }
+}
+
+TEST(ArmModel, StateSpaceBoundsTheSliderAndWrapsTheTurn) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  ArmStateSpace space(m);
+  ASSERT_EQ(space.dof(), 2u);
+  ompl::base::State* a = space.allocState();
+  ompl::base::State* b = space.allocState();
+  const double qa[2] = {0.0, 3.0}, qb[2] = {0.3, -3.0};
+  space.fromJoints(qa, a);
+  space.fromJoints(qb, b);
+  EXPECT_FALSE(space.satisfiesBounds(b));  // 0.3 > the slider's upper limit 0.2
+  double dq[2];
+  space.jointSteps(a, b, dq);
+  EXPECT_NEAR(dq[0], 0.3, 1e-15);
+  EXPECT_NEAR(dq[1], 2 * kPi - 6.0, 1e-12);  // the shorter arc, through pi
+  // Interpolation follows jointSteps: halfway, the angle is 3 + (2 pi - 6)/2, wrapped.
+  ompl::base::State* mid = space.allocState();
+  space.interpolate(a, b, 0.5, mid);
+  double qm[2];
+  space.toJoints(mid, qm);
+  EXPECT_NEAR(qm[0], 0.15, 1e-15);
+  EXPECT_NEAR(std::remainder(qm[1] - (3.0 + 0.5 * dq[1]), 2 * kPi), 0.0, 1e-12);
+  space.freeState(a), space.freeState(b), space.freeState(mid);
+}
+
+TEST(PrimitiveMeshes, HaveTheStatedSizesAndContainThePrimitive) {
+  const Mesh box = boxMesh(Vec3(0.4, 0.2, 0.1));
+  EXPECT_EQ(box.triangleCount(), 12u);
+  EXPECT_TRUE(box.bounds().sizes().isApprox(Vec3(0.4, 0.2, 0.1)));
+  // Cylinder: kCylinderSegments sides, corners at r / cos(pi / n), so the side faces touch r.
+  const Mesh cyl = cylinderMesh(0.05, 0.1);
+  EXPECT_EQ(cyl.triangleCount(), 4u * kCylinderSegments);
+  EXPECT_NEAR(cyl.bounds().min().z(), -0.05, 1e-15);
+  EXPECT_NEAR(cyl.bounds().max().z(), 0.05, 1e-15);
+  double cornerRadius = 0.0;
+  for (const Vec3& v : cyl.vertices()) cornerRadius = std::max(cornerRadius, v.head<2>().norm());
+  EXPECT_NEAR(cornerRadius, 0.05 / std::cos(kPi / kCylinderSegments), 1e-15);
+  // Sphere: every face's plane at least r from the centre (contains the ball), none more than
+  // 1 % beyond (the documented resolution).
+  const double r = 0.03;
+  const Mesh sphere = sphereMesh(r);
+  EXPECT_EQ(sphere.triangleCount(), static_cast<std::size_t>(2 * kSphereSegments * (kSphereRings - 1)));
+  double nearest = 1e9, farthest = 0.0;
+  for (std::size_t t = 0; t < sphere.triangleCount(); ++t) {
+    const Vec3 n = (sphere.corner(t, 1) - sphere.corner(t, 0)).cross(sphere.corner(t, 2) - sphere.corner(t, 0)).normalized();
+    nearest = std::min(nearest, std::abs(n.dot(sphere.corner(t, 0))));
+  }
+  for (const Vec3& v : sphere.vertices()) farthest = std::max(farthest, v.norm());
+  EXPECT_GE(nearest, r * (1 - 1e-12));
+  EXPECT_LE(farthest, 1.01 * r);
+  EXPECT_THROW(boxMesh(Vec3(1, 0, 1)), InputError);
+  EXPECT_THROW(cylinderMesh(-1, 1), InputError);
+}
+
+TEST(ArmCollisionPairs, AdjacencyDisablesParentChildAndRigidGroups) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  const ArmCollisionPairs pairs(m);
+  // base-carriage and carriage-arm: parent and child; arm-tip: one rigid group; carriage-tip: the
+  // tip's group hangs from the carriage through the turn. Left: base-arm and base-tip.
+  const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 2}, {0, 3}};
+  EXPECT_EQ(pairs.enabledPairs(), expected);
+  EXPECT_EQ(pairs.disabled().size(), 4u);
+  EXPECT_FALSE(pairs.enabled(3, 1));
+  EXPECT_TRUE(pairs.enabled(3, 0));
+}
+
+TEST(ArmCollisionPairs, SrdfDisablesItsPairsAndRoundTrips) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  test::ScratchDir dir;
+  const std::string srdf = dir.write("slider.srdf", R"(<?xml version="1.0"?>
+<robot name="slider_arm">
+  <group name="all"><joint name="slide"/></group>
+  <disable_collisions link1="tip" link2="base" reason="Never"/>
+</robot>
+)");
+  ArmCollisionPairs pairs(m);
+  disablePairsFromSrdf(m, srdf, pairs);
+  const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 2}};
+  EXPECT_EQ(pairs.enabledPairs(), expected);
+  writeSrdf(m, pairs, dir.path("written.srdf"));
+  ArmCollisionPairs again(m);
+  disablePairsFromSrdf(m, dir.path("written.srdf"), again);
+  EXPECT_EQ(again.enabledPairs(), expected);
+  // A link the model lacks, and a file that is not XML: errors naming the file.
+  const std::string bad = dir.write("bad.srdf", "<robot><disable_collisions link1=\"tip\" link2=\"nope\"/></robot>");
+  try {
+    disablePairsFromSrdf(m, bad, pairs);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.srdf:1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nope"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(disablePairsFromSrdf(m, dir.write("junk.srdf", "<robot"), pairs), InputError);
+  EXPECT_THROW(disablePairsFromSrdf(m, dir.path("absent.srdf"), pairs), InputError);
+}
+
+// Each failure mode of readUrdf: one InputError whose message names the file and what is wrong.
+TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
+  test::ScratchDir dir;
+  dir.write("garbage.stl", "solid x\nthis is not an STL file\n");
+  const std::string link = R"(<link name="a"><collision><geometry><box size="1 1 1"/></geometry></collision></link>)";
+  const auto robot = [&](const std::string& body) { return "<robot name=\"r\">" + body + "</robot>"; };
+  const auto joint = [](const std::string& name, const std::string& type, const std::string& parent,
+                        const std::string& child) {
+    return "<joint name=\"" + name + "\" type=\"" + type + "\"><parent link=\"" + parent + "\"/><child link=\"" +
+           child + "\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>";
+  };
+  struct Case {
+    std::string file, text, mustSay;
+  };
+  const std::vector<Case> cases = {
+      {"not_xml.urdf", "<robot name=\"r\"><link name=\"a\">", "not XML"},
+      {"no_robot.urdf", "<model/>", "no <robot>"},
+      {"missing_mesh.urdf", robot(R"(<link name="a"><collision><geometry><mesh filename="absent.stl"/></geometry></collision></link>)"), "absent.stl"},
+      {"unreadable_mesh.urdf", robot(R"(<link name="a"><collision><geometry><mesh filename="garbage.stl"/></geometry></collision></link>)"), "link 'a'"},
+      {"missing_package.urdf", robot(R"(<link name="a"><collision><geometry><mesh filename="package://pkg/m.stl"/></geometry></collision></link>)"), "package://pkg/m.stl"},
+      {"unknown_type.urdf", robot(link + "<link name=\"b\"/>" + joint("j", "hinge", "a", "b")), "unknown type 'hinge'"},
+      {"floating.urdf", robot(link + "<link name=\"b\"/>" + joint("j", "floating", "a", "b")), "joint 'j' is floating"},
+      {"planar.urdf", robot(link + "<link name=\"b\"/>" + joint("j", "planar", "a", "b")), "joint 'j' is planar"},
+      {"cycle.urdf", robot(link + "<link name=\"b\"/><link name=\"c\"/>" + joint("j1", "revolute", "a", "b") +
+                           joint("j2", "revolute", "b", "c") + joint("j3", "revolute", "c", "b")), "cycle"},
+      {"loop.urdf", robot(link + "<link name=\"b\"/>" + joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "b", "a")), "cycle"},
+      {"two_roots.urdf", robot(link + "<link name=\"b\"/>"), "root links"},
+      {"undefined_link.urdf", robot(link + joint("j", "revolute", "a", "zz")), "'zz'"},
+      {"bad_limits.urdf", robot(link + "<link name=\"b\"/>" + "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/><limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/></joint>"), "joint 'j'"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = dir.write(c.file, c.text);
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << c.file << ": no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(c.file), std::string::npos) << c.file << ": " << what;
+      EXPECT_NE(what.find(c.mustSay), std::string::npos) << c.file << ": " << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << c.file << ": one line: " << what;
+    }
+  }
+  EXPECT_THROW(readUrdf(dir.path("absent.urdf")), InputError);
+}
+
+TEST(ArmModel, MeshScaleAndFileUrisAndPackageSearchPath) {
+  test::ScratchDir dir;
+  std::filesystem::create_directories(dir.root() / "share" / "pkg" / "meshes");
+  std::filesystem::create_directories(dir.root() / "flat" / "meshes");
+  const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
+  dir.write("share/pkg/meshes/t.stl", stl);
+  dir.write("flat/meshes/t.stl", stl);
+  const auto urdf = [](const std::string& uri, const std::string& scale) {
+    return "<robot name=\"r\"><link name=\"a\"><collision><geometry><mesh filename=\"" + uri + "\"" + scale +
+           "/></geometry></collision></link></robot>";
+  };
+  // DIR/NAME/REST first, then DIR/REST.
+  const ArmModel viaName = readUrdf(dir.write("a.urdf", urdf("package://pkg/meshes/t.stl", " scale=\"2 3 4\"")),
+                                    {dir.path("nowhere"), dir.path("share")});
+  EXPECT_TRUE(viaName.links[0].collision->bounds().max().isApprox(Vec3(2, 3, 0)));
+  const ArmModel viaRest = readUrdf(dir.write("b.urdf", urdf("package://other/meshes/t.stl", "")), {dir.path("flat")});
+  EXPECT_TRUE(viaRest.links[0].collision->bounds().max().isApprox(Vec3(1, 1, 0)));
+  const ArmModel viaFile = readUrdf(dir.write("c.urdf", urdf("file://" + dir.path("flat/meshes/t.stl"), "")));
+  EXPECT_EQ(viaFile.links[0].collision->triangleCount(), 1u);
+  const ArmModel relative = readUrdf(dir.write("d.urdf", urdf("flat/meshes/t.stl", "")));
+  EXPECT_EQ(relative.links[0].collision->triangleCount(), 1u);
+}
+
+// The KR5's palm pose composed by hand from the URDF's numbers (not by forwardKinematics):
+//   world -> base_link:  T(0, -0.5, 0) Rx(-1.57)
+//   base_link -> shoulder: T(0, 0, 0.203) Rz(q1)
+//   shoulder -> bicep:   T(0.075, 0.0735, 0.13) Ry(q2)
+//   bicep -> elbow:      T(0, -0.00549999999999999, 0.27) Ry(q3)
+//   elbow -> forearm:    T(0.10599996023205, -0.0680006418263501, 0.0900000000000001) Rx(q4)
+//   forearm -> wrist:    T(0.187000000000001, -0.0289999999999998, 0) Ry(q5)
+//   wrist -> palm:       T(0.0519999999999999, 0.0289999999999996, 0) Rx(q6)
+TEST(ArmModel, Kr5ForwardKinematicsMatchesTransformsComposedFromTheUrdf) {
+  ADSD_REQUIRE_ROBOTS();
+  const ArmModel m = readUrdf(test::kr5Urdf());
+  ASSERT_EQ(m.dof(), 6u);
+  const char* names[] = {"shoulder_yaw", "shoulder_pitch", "elbow_pitch", "elbow_roll", "wrist_pitch", "wrist_roll"};
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(m.jointIndex(names[i]), i);
+  EXPECT_EQ(m.links[0].name, "world");
+  EXPECT_FALSE(m.links[0].collision.has_value());  // no geometry: never checked
+  const auto T = [](double x, double y, double z) { return Pose(Eigen::Translation3d(x, y, z)); };
+  const auto R = [](double a, const Vec3& axis) { return Pose(Eigen::AngleAxisd(a, axis)); };
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  std::vector<Pose> poses;
+  for (int i = 0; i < 50; ++i) {
+    double q[6];
+    for (double& v : q) v = u(rng);
+    forwardKinematics(m, q, poses);
+    const Pose base = T(0, -0.5, 0) * R(-1.57, Vec3::UnitX());
+    const Pose shoulder = base * T(0, 0, 0.203) * R(q[0], Vec3::UnitZ());
+    const Pose bicep = shoulder * T(0.075, 0.0735, 0.13) * R(q[1], Vec3::UnitY());
+    const Pose elbow = bicep * T(0, -0.00549999999999999, 0.27) * R(q[2], Vec3::UnitY());
+    const Pose forearm = elbow * T(0.10599996023205, -0.0680006418263501, 0.0900000000000001) * R(q[3], Vec3::UnitX());
+    const Pose wrist = forearm * T(0.187000000000001, -0.0289999999999998, 0) * R(q[4], Vec3::UnitY());
+    const Pose palm = wrist * T(0.0519999999999999, 0.0289999999999996, 0) * R(q[5], Vec3::UnitX());
+    const Pose expected[] = {base, shoulder, bicep, elbow, forearm, wrist, palm};
+    for (std::size_t l = 1; l < 8; ++l) {
+      EXPECT_LT((poses[l].matrix() - expected[l - 1].matrix()).norm(), 1e-12) << m.links[l].name;
+    }
+  }
+}
+
+TEST(ArmModel, WamReadsThroughThePackageSearchPath) {
+  ADSD_REQUIRE_ROBOTS();
+  EXPECT_THROW(readUrdf(test::wamUrdf()), InputError);  // package://herb_description/ without a search path
+  const ArmModel m = readUrdf(test::wamUrdf(), {test::wamSearchDir()});
+  EXPECT_EQ(m.dof(), 7u);
+  std::size_t withGeometry = 0;
+  for (const ArmLink& l : m.links) withGeometry += l.collision.has_value();
+  EXPECT_GE(withGeometry, 8u);
+  const ArmCollisionPairs pairs(m);
+  EXPECT_FALSE(pairs.enabledPairs().empty());
+}
+
+}  // namespace
+}  // namespace adsd::planner
