@@ -39,7 +39,7 @@ PrimitiveType primitiveType(const Document& doc, const Field& type) {
   if (t == "cone" || t == "4") {
     doc.fail(type, "cones are not supported (box, sphere and cylinder are; see docs/problem-files.md)");
   }
-  doc.fail(type, "unknown primitive type '" + doc.text(type) + "' (expected box, sphere or cylinder, or 1, 2, 3)");
+  doc.fail(type, "unknown primitive type " + yaml::quoted(doc.text(type)) + " (expected box, sphere or cylinder, or 1, 2, 3)");
 }
 
 /// A dimension: finite, positive, within kMaxSceneCoordinate.
@@ -173,7 +173,7 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
     const std::string id = doc.text(idField);
     if (id.empty()) doc.fail(idField, "an empty id");
     if (const auto [it, inserted] = idLines.emplace(id, idField.line); !inserted) {
-      doc.fail(idField, "id '" + id + "' appears twice (first at line " + std::to_string(it->second) + ")");
+      doc.fail(idField, "id " + yaml::quoted(id) + " appears twice (first at line " + std::to_string(it->second) + ")");
     }
     std::string frame;
     if (const Field header = doc.child(object, "header"); header.node.IsDefined() && !header.node.IsNull()) {
@@ -190,7 +190,7 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
                [&](const Field& p) { return primitiveMesh(doc, p, id); }, vertices, triangles);
     readShapes(doc, object, "meshes", "mesh_poses", objectPose,
                [&](const Field& m) { return meshShape(doc, m, id); }, vertices, triangles);
-    if (triangles.empty()) doc.fail(object, "object '" + id + "' has no primitives and no meshes");
+    if (triangles.empty()) doc.fail(object, "object " + yaml::quoted(id) + " has no primitives and no meshes");
     scene.objects.emplace_back(std::move(vertices), std::move(triangles), id);
     scene.frames.push_back(frame);
     scene.lines.push_back(object.line);

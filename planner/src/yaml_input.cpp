@@ -20,16 +20,6 @@ namespace {
 /// At most this many characters of a scalar are echoed in a message.
 constexpr std::size_t kMaxEchoedCharacters = 60;
 
-/// The text in quotes, shortened, with control characters shown as '?' so that a message stays one line.
-std::string quoted(const std::string& text) {
-  std::string s = text.size() <= kMaxEchoedCharacters ? text : text.substr(0, kMaxEchoedCharacters) + "...";
-  for (char& c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7f) c = '?';
-  }
-  return "'" + s + "'";
-}
-
 /// An optional sign, digits with an optional point (at least one digit), an optional exponent;
 /// nothing else: the decimal form that strtod reads the same in every locale (the same rule as
 /// the .cfg reader's, problem_file.cpp). YAML's .inf, .nan, hexadecimal and blanks are not it.
@@ -66,6 +56,15 @@ const char* kindName(const YAML::Node& n) {
 }
 
 }  // namespace
+
+std::string quoted(const std::string& text) {
+  std::string s = text.size() <= kMaxEchoedCharacters ? text : text.substr(0, kMaxEchoedCharacters) + "...";
+  for (char& c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) c = '?';
+  }
+  return "'" + s + "'";
+}
 
 Document::Document(const std::string& text, std::string source) : source_(std::move(source)), budget_(4 * text.size() + 1024) {
   if (text.find('\0') != std::string::npos) throw InputError(source_ + ": not a text file (contains a NUL byte)");
@@ -234,7 +233,7 @@ JointValues jointState(const Document& doc, const Field& state) {
     const Field position = doc.element(positions, i);
     const double value = doc.number(position);
     if (!out.values.emplace(joint, value).second) {
-      doc.fail(name, "joint '" + joint + "' appears twice (first at line " + std::to_string(out.lines[joint]) + ")");
+      doc.fail(name, "joint " + quoted(joint) + " appears twice (first at line " + std::to_string(out.lines[joint]) + ")");
     }
     out.lines[joint] = position.line;
   }

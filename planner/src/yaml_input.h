@@ -82,6 +82,10 @@ class Document {
   mutable std::size_t spent_ = 0;
 };
 
+/// \brief \p text in single quotes for a message: shortened to 60 characters, control characters
+/// shown as '?', so that a message stays one line whatever the file holds.
+std::string quoted(const std::string& text);
+
 /// \brief A sensor_msgs/JointState's `name` and `position` lists as a map, with the line of each
 /// position; lists of different lengths, a repeated name or an empty name are errors.
 struct JointValues {
