@@ -225,6 +225,10 @@ TEST(PlanningSceneYamlErrors, RepeatedIdEmptyObjectPlanesAndMissingFile) {
   EXPECT_ERROR("world:\n  collision_objects:\n    - id: nothing\n", ":3:", "has no primitives and no meshes");
   EXPECT_ERROR("world:\n  collision_objects:\n    - id: p\n      planes: [{coef: [0, 0, 1, 0]}]\n", ":4:",
                "planes are not supported");
+  // An id holding a line break is echoed on one line.
+  const std::string box = ", primitives: [{type: box, dimensions: [1, 1, 1]}], primitive_poses: [{}]}\n";
+  EXPECT_ERROR("world:\n  collision_objects:\n    - {id: \"a\\nb\"" + box + "    - {id: \"a\\nb\"" + box, ":4:",
+               "id 'a?b' appears twice (first at line 3)");
   try {
     readPlanningSceneYaml("/nonexistent/scene.yaml");
     ADD_FAILURE();
