@@ -20,6 +20,12 @@ namespace {
 /// At most this many characters of a scalar are echoed in a message.
 constexpr std::size_t kMaxEchoedCharacters = 60;
 
+/// The budget of values a document may cost, per byte of its text and in all (Document's comment:
+/// a file without aliases costs at most about one unit a byte; 4 leaves room, and the slack lets a
+/// tiny file hold its few values).
+constexpr std::size_t kBudgetPerByte = 4;
+constexpr std::size_t kBudgetSlack = 1024;
+
 /// An optional sign, digits with an optional point (at least one digit), an optional exponent;
 /// nothing else: the decimal form that strtod reads the same in every locale (the same rule as
 /// the .cfg reader's, problem_file.cpp). YAML's .inf, .nan, hexadecimal and blanks are not it.
@@ -66,7 +72,7 @@ std::string quoted(const std::string& text) {
   return "'" + s + "'";
 }
 
-Document::Document(const std::string& text, std::string source) : source_(std::move(source)), budget_(4 * text.size() + 1024) {
+Document::Document(const std::string& text, std::string source) : source_(std::move(source)), budget_(kBudgetPerByte * text.size() + kBudgetSlack) {
   if (text.find('\0') != std::string::npos) throw InputError(source_ + ": not a text file (contains a NUL byte)");
   try {
     root_ = YAML::Load(text);
@@ -129,7 +135,7 @@ Field Document::element(const Field& sequence, std::size_t i) const {
 
 void Document::spend(const Field& f) const {
   if (++spent_ > budget_) {
-    fail(f, "more values than a file of " + std::to_string((budget_ - 1024) / 4) +
+    fail(f, "more values than a file of " + std::to_string((budget_ - kBudgetSlack) / kBudgetPerByte) +
                 " bytes can hold (YAML aliases repeating nodes?); refused");
   }
 }
