@@ -63,7 +63,8 @@ MotionPlanRequestYaml parseMotionPlanRequestYaml(const std::string& text, const 
     if (!(g.toleranceAbove >= 0.0)) doc.fail(above, "a tolerance must be >= 0");
     if (!(g.toleranceBelow >= 0.0)) doc.fail(below, "a tolerance must be >= 0");
     if (const auto [it, inserted] = request.goal.emplace(name, g); !inserted) {
-      doc.fail(nameField, "joint " + yaml::quoted(name) + " is constrained twice (first at line " + std::to_string(it->second.line) + ")");
+      doc.fail(nameField, "joint " + yaml::quoted(name) + " is constrained twice (first at line " +
+                              std::to_string(it->second.line) + ")");
     }
   }
 

@@ -39,7 +39,8 @@ PrimitiveType primitiveType(const Document& doc, const Field& type) {
   if (t == "cone" || t == "4") {
     doc.fail(type, "cones are not supported (box, sphere and cylinder are; see docs/problem-files.md)");
   }
-  doc.fail(type, "unknown primitive type " + yaml::quoted(doc.text(type)) + " (expected box, sphere or cylinder, or 1, 2, 3)");
+  doc.fail(type, "unknown primitive type " + yaml::quoted(doc.text(type)) +
+                     " (expected box, sphere or cylinder, or 1, 2, 3)");
 }
 
 /// A dimension: finite, positive, within kMaxSceneCoordinate.
@@ -57,7 +58,9 @@ Mesh primitiveMesh(const Document& doc, const Field& primitive, const std::strin
   const std::size_t n = doc.sequenceLength(dims);
   const std::size_t expected = type == PrimitiveType::box ? 3 : type == PrimitiveType::sphere ? 1 : 2;
   if (n != expected) {
-    const char* form = type == PrimitiveType::box ? "[x, y, z]" : type == PrimitiveType::sphere ? "[radius]" : "[height, radius]";
+    const char* form = type == PrimitiveType::box      ? "[x, y, z]"
+                       : type == PrimitiveType::sphere ? "[radius]"
+                                                       : "[height, radius]";
     doc.fail(dims, "expected " + std::to_string(expected) + " dimensions " + form + ", got " + std::to_string(n));
   }
   std::vector<double> d;

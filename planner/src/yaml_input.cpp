@@ -72,7 +72,8 @@ std::string quoted(const std::string& text) {
   return "'" + s + "'";
 }
 
-Document::Document(const std::string& text, std::string source) : source_(std::move(source)), budget_(kBudgetPerByte * text.size() + kBudgetSlack) {
+Document::Document(const std::string& text, std::string source)
+    : source_(std::move(source)), budget_(kBudgetPerByte * text.size() + kBudgetSlack) {
   if (text.find('\0') != std::string::npos) throw InputError(source_ + ": not a text file (contains a NUL byte)");
   try {
     root_ = YAML::Load(text);
