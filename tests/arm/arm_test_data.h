@@ -11,9 +11,9 @@ namespace adsd::planner::test {
 
 inline std::string armTestData(const std::string& name) { return std::string(ADSD_ARM_TEST_DATA) + "/" + name; }
 
-/// The robot cache: $ADSD_ROBOT_DIR, or ~/.cache/adsd/robots (fetch_robots.sh's default).
+/// The robot cache: $ADSD_ROBOTS (as in an arm problem's .cfg), or ~/.cache/adsd/robots (fetch_robots.sh's default).
 inline std::string robotCacheDir() {
-  if (const char* dir = std::getenv("ADSD_ROBOT_DIR"); dir && *dir) return dir;
+  if (const char* dir = std::getenv("ADSD_ROBOTS"); dir && *dir) return dir;
   const char* home = std::getenv("HOME");
   return std::string(home ? home : ".") + "/.cache/adsd/robots";
 }

@@ -237,6 +237,66 @@ def distance_seeds():
                   (1e6, 1e6, 0, 1, 0, 0, 0), f64)
 
 
+# The MotionBenchMaker target picks the reader by the first byte (motion_bench_maker_fuzzer.cpp).
+MBM_SCENE = """name: seed
+robot_state:
+  joint_state: {name: [j1, j2], position: [0.5, -1.25]}
+world:
+  collision_objects:
+    - id: table
+      header: {frame_id: world}
+      pose:
+        position: {x: 1, y: 0, z: 0}
+        orientation: {x: 0, y: 0, z: 0.7071067811865476, w: 0.7071067811865476}
+      primitives:
+        - type: box
+          dimensions: [0.4, 0.2, 0.1]
+        - {type: cylinder, dimensions: [0.6, 0.05]}
+      primitive_poses:
+        - position: {x: 0.5, y: 0, z: 0.2}
+          orientation: {x: 0, y: 0, z: 0, w: 1}
+        - position: [0, 0, 1]
+          orientation: [0.7071067811865476, 0, 0, 0.7071067811865476]
+    - id: ball
+      primitives: [{type: 2, dimensions: [0.1]}]
+      primitive_poses: [{position: [0, -1, 0.5]}]
+    - id: sheet
+      meshes:
+        - vertices: [[0, 0, 0], [1, 0, 0], {x: 0, y: 1, z: 0}]
+          triangles: [{vertex_indices: [0, 1, 2]}, [2, 1, 0]]
+      mesh_poses: [{position: [0, 0, 2], orientation: [0, 0, 1, 0]}]
+"""
+MBM_REQUEST = """group_name: manipulator
+allowed_planning_time: 5.5
+start_state:
+  joint_state:
+    name: [a, b]
+    position: [0.1, -0.2]
+goal_constraints:
+  - joint_constraints:
+      - {joint_name: a, position: 1.5, tolerance_above: 0.001, tolerance_below: 0.002}
+      - joint_name: b
+        position: -1e-1
+        tolerance_above: 0
+        tolerance_below: 0
+"""
+MBM_CFG = """# an arm problem
+[problem]
+name = seed
+robot = ${ADSD_ROBOTS}/KR5/KR5 sixx R650.urdf
+srdf = kr5.srdf
+scene = scene.yaml
+request = request.yaml
+package_path = ${ADSD_ROBOTS}:extra
+"""
+
+
+def motion_bench_maker_seeds():
+    write("motion_bench_maker", "scene.yaml", bytes([0]) + MBM_SCENE.encode())
+    write("motion_bench_maker", "request.yaml", bytes([1]) + MBM_REQUEST.encode())
+    write("motion_bench_maker", "problem.cfg", bytes([3]) + MBM_CFG.encode())
+
+
 def main():
     shutil.rmtree(CORPUS, ignore_errors=True)
     obj_seeds()
@@ -247,6 +307,7 @@ def main():
     cfg_seeds()
     pose_seeds()
     distance_seeds()
+    motion_bench_maker_seeds()
     total = sum(os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(CORPUS) for f in fs)
     print("seed corpora written to %s: %d bytes" % (CORPUS, total))
 

@@ -20,7 +20,7 @@
 #   --build-dir DIR  the fuzz build (default build-fuzz); DIR/fuzz-runs/TARGET holds the corpus
 #                    grown by the run, the log, and any crash-/timeout-/leak-/oom- artifact
 #   --parallel P     targets fuzzed at once (default: the number of cores)
-#   TARGET           mesh_loader, problem_file, pose_file, distance (default: all four)
+#   TARGET           mesh_loader, problem_file, pose_file, distance, motion_bench_maker (default: all five)
 #
 # Exit status 0 when no target found anything new; 1 when one did (each finding is printed with
 # its artifact and the command that reproduces it), or when a fuzzer ended without finishing its
@@ -35,7 +35,8 @@ trap 'echo "run_fuzzers.sh: FAILED at line $LINENO: $BASH_COMMAND (exit status $
 # Executions per target for --ci: about 60 s each, calibrated with --runs on this machine (2 cores
 # shared with other builds; README.md gives the measurement). The targets' speeds differ by two
 # orders of magnitude (problem_file builds an OMPL problem per input, distance runs the oracle).
-declare -A ci_runs=([mesh_loader]=10000 [problem_file]=10000 [pose_file]=500000 [distance]=3600)
+declare -A ci_runs=([mesh_loader]=10000 [problem_file]=10000 [pose_file]=500000 [distance]=3600
+                    [motion_bench_maker]=200000)
 
 build_dir=build-fuzz
 mode=""
@@ -59,9 +60,9 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 [[ -n "$mode" ]] || usage "give one of --ci, --runs N, --seconds N"
-[[ ${#targets[@]} -eq 0 ]] && targets=(mesh_loader problem_file pose_file distance)
+[[ ${#targets[@]} -eq 0 ]] && targets=(mesh_loader problem_file pose_file distance motion_bench_maker)
 for t in "${targets[@]}"; do
-  [[ -n "${ci_runs[$t]:-}" ]] || usage "unknown target $t (mesh_loader, problem_file, pose_file, distance)"
+  [[ -n "${ci_runs[$t]:-}" ]] || usage "unknown target $t (mesh_loader, problem_file, pose_file, distance, motion_bench_maker)"
 done
 number='^[1-9][0-9]*$'
 [[ "$mode" != runs || "$runs" =~ $number ]] || usage "--runs needs a positive whole number"

@@ -1,0 +1,263 @@
+#include "yaml_input.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <locale.h>  // newlocale, strtod_l (POSIX): numbers read in the C locale
+#include <stdlib.h>
+
+#include "adsd/error.h"
+
+namespace adsd::planner::yaml {
+
+namespace {
+
+/// At most this many characters of a scalar are echoed in a message.
+constexpr std::size_t kMaxEchoedCharacters = 60;
+
+/// The budget of values a document may cost, per byte of its text and in all (Document's comment:
+/// a file without aliases costs at most about one unit a byte; 4 leaves room, and the slack lets a
+/// tiny file hold its few values).
+constexpr std::size_t kBudgetPerByte = 4;
+constexpr std::size_t kBudgetSlack = 1024;
+
+/// An optional sign, digits with an optional point (at least one digit), an optional exponent;
+/// nothing else: the decimal form that strtod reads the same in every locale (the same rule as
+/// the .cfg reader's, problem_file.cpp). YAML's .inf, .nan, hexadecimal and blanks are not it.
+bool isDecimalNumber(const std::string& v) {
+  std::size_t i = 0;
+  const auto digitsAt = [&](std::size_t& k) {
+    const std::size_t from = k;
+    while (k < v.size() && std::isdigit(static_cast<unsigned char>(v[k]))) ++k;
+    return k - from;
+  };
+  if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
+  std::size_t digits = digitsAt(i);
+  if (i < v.size() && v[i] == '.') {
+    ++i;
+    digits += digitsAt(i);
+  }
+  if (digits == 0) return false;
+  if (i < v.size() && (v[i] == 'e' || v[i] == 'E')) {
+    ++i;
+    if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
+    if (digitsAt(i) == 0) return false;
+  }
+  return i == v.size();
+}
+
+const char* kindName(const YAML::Node& n) {
+  switch (n.Type()) {
+    case YAML::NodeType::Null: return "null";
+    case YAML::NodeType::Scalar: return "a scalar";
+    case YAML::NodeType::Sequence: return "a sequence";
+    case YAML::NodeType::Map: return "a map";
+    default: return "nothing";
+  }
+}
+
+}  // namespace
+
+std::string quoted(const std::string& text) {
+  std::string s = text.size() <= kMaxEchoedCharacters ? text : text.substr(0, kMaxEchoedCharacters) + "...";
+  for (char& c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) c = '?';
+  }
+  return "'" + s + "'";
+}
+
+Document::Document(const std::string& text, std::string source)
+    : source_(std::move(source)), budget_(kBudgetPerByte * text.size() + kBudgetSlack) {
+  if (text.find('\0') != std::string::npos) throw InputError(source_ + ": not a text file (contains a NUL byte)");
+  try {
+    root_ = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    // yaml-cpp's marks are 0-based; a mark of -1 means the parser did not know the place.
+    const std::string line = e.mark.line >= 0 ? ":" + std::to_string(e.mark.line + 1) : "";
+    std::string what = e.msg;
+    for (char& c : what) {
+      if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+    }
+    throw InputError(source_ + line + ": not valid YAML: " + what);
+  }
+}
+
+Field Document::root() const {
+  return Field{root_, "", 1};
+}
+
+void Document::fail(const Field& f, const std::string& what) const {
+  const std::string field = f.path.empty() ? "the document" : "field '" + f.path + "'";
+  throw InputError(source_ + ":" + std::to_string(f.line) + ": " + field + ": " + what);
+}
+
+void Document::requireMap(const Field& f) const {
+  if (!f.node.IsDefined()) fail(f, "is missing");
+  if (!f.node.IsMap()) fail(f, std::string("expected a map, got ") + kindName(f.node));
+}
+
+Field Document::child(const Field& map, const std::string& key) const {
+  requireMap(map);
+  const YAML::Node& parent = map.node;
+  // Copy-constructed, never assigned: assigning a yaml-cpp node rebinds what it refers to, and
+  // assigning an absent (zombie) node throws.
+  Field c{parent[key], map.path.empty() ? key : map.path + "." + key, 0};
+  c.line = c.node.IsDefined() ? static_cast<int>(c.node.Mark().line) + 1 : map.line;
+  if (c.line < 1) c.line = map.line;
+  return c;
+}
+
+Field Document::required(const Field& map, const std::string& key) const {
+  Field c = child(map, key);
+  if (!c.node.IsDefined()) fail(c, "is missing");
+  return c;
+}
+
+std::size_t Document::sequenceLength(const Field& f) const {
+  if (!f.node.IsDefined()) fail(f, "is missing");
+  if (!f.node.IsSequence()) fail(f, std::string("expected a sequence, got ") + kindName(f.node));
+  return f.node.size();
+}
+
+Field Document::element(const Field& sequence, std::size_t i) const {
+  const YAML::Node& parent = sequence.node;
+  Field c{parent[i], sequence.path + "[" + std::to_string(i) + "]", 0};
+  c.line = c.node.IsDefined() ? static_cast<int>(c.node.Mark().line) + 1 : sequence.line;
+  if (c.line < 1) c.line = sequence.line;
+  spend(c);
+  return c;
+}
+
+void Document::spend(const Field& f) const {
+  if (++spent_ > budget_) {
+    fail(f, "more values than a file of " + std::to_string((budget_ - kBudgetSlack) / kBudgetPerByte) +
+                " bytes can hold (YAML aliases repeating nodes?); refused");
+  }
+}
+
+std::string Document::text(const Field& f) const {
+  if (!f.node.IsDefined()) fail(f, "is missing");
+  if (!f.node.IsScalar()) fail(f, std::string("expected a scalar, got ") + kindName(f.node));
+  spend(f);
+  return f.node.Scalar();
+}
+
+double Document::number(const Field& f) const {
+  const std::string v = text(f);
+  // The C locale's reading whatever the process's locale (a program under a decimal-comma locale
+  // must read "0.5" as a half).
+  static const locale_t classic = newlocale(LC_ALL_MASK, "C", static_cast<locale_t>(nullptr));
+  if (!isDecimalNumber(v)) fail(f, "expected a finite number, got " + quoted(v));
+  char* end = nullptr;
+  const double x = strtod_l(v.c_str(), &end, classic);
+  if (end != v.c_str() + v.size() || !std::isfinite(x)) fail(f, "expected a finite number, got " + quoted(v));
+  return x;
+}
+
+std::uint64_t Document::whole(const Field& f, std::uint64_t most) const {
+  const std::string v = text(f);
+  const bool digits = !v.empty() && v.size() <= 19 &&
+                      std::all_of(v.begin(), v.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  if (!digits) fail(f, "expected a whole number from 0 to " + std::to_string(most) + ", got " + quoted(v));
+  const std::uint64_t x = std::strtoull(v.c_str(), nullptr, 10);
+  if (x > most) fail(f, quoted(v) + " is out of range (at most " + std::to_string(most) + ")");
+  return x;
+}
+
+Vec3 Document::point(const Field& f) const {
+  if (!f.node.IsDefined()) return Vec3::Zero();
+  Vec3 p;
+  if (f.node.IsSequence()) {
+    if (f.node.size() != 3) fail(f, "expected 3 coordinates [x, y, z], got " + std::to_string(f.node.size()));
+    for (int i = 0; i < 3; ++i) p[i] = number(element(f, static_cast<std::size_t>(i)));
+  } else {
+    requireMap(f);
+    const char* names[] = {"x", "y", "z"};
+    // A coordinate left out of a map is 0, as in a ROS message.
+    for (int i = 0; i < 3; ++i) {
+      const Field c = child(f, names[i]);
+      p[i] = c.node.IsDefined() ? number(c) : 0.0;
+    }
+  }
+  if (p.cwiseAbs().maxCoeff() > kMaxSceneCoordinate) fail(f, "a coordinate beyond 1e6 in magnitude");
+  return p;
+}
+
+Eigen::Quaterniond Document::quaternion(const Field& f) const {
+  if (!f.node.IsDefined()) return Eigen::Quaterniond::Identity();
+  double q[4];
+  if (f.node.IsSequence()) {
+    if (f.node.size() != 4) fail(f, "expected 4 components [x, y, z, w], got " + std::to_string(f.node.size()));
+    for (int i = 0; i < 4; ++i) q[i] = number(element(f, static_cast<std::size_t>(i)));
+  } else {
+    requireMap(f);
+    const char* names[] = {"x", "y", "z", "w"};
+    for (int i = 0; i < 4; ++i) {
+      const Field c = child(f, names[i]);
+      q[i] = c.node.IsDefined() ? number(c) : 0.0;
+    }
+  }
+  // Each component is finite; scaled by the largest before squaring, so that 1e300 does not overflow.
+  const double largest = std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2]), std::fabs(q[3])});
+  if (largest == 0.0) fail(f, "the quaternion is zero");
+  const Eigen::Vector4d scaled(q[0] / largest, q[1] / largest, q[2] / largest, q[3] / largest);
+  const double norm = scaled.norm() * largest;
+  if (!(std::fabs(norm - 1.0) <= kQuaternionNormTolerance)) {
+    fail(f, "the quaternion's norm is " + std::to_string(norm) + ", not 1 (within 1e-3)");
+  }
+  return Eigen::Quaterniond(scaled[3], scaled[0], scaled[1], scaled[2]).normalized();
+}
+
+Pose Document::pose(const Field& f) const {
+  Pose p = Pose::Identity();
+  if (!f.node.IsDefined()) return p;
+  requireMap(f);
+  p.translate(point(child(f, "position")));
+  p.rotate(quaternion(child(f, "orientation")));
+  return p;
+}
+
+JointValues jointState(const Document& doc, const Field& state) {
+  JointValues out;
+  const Field names = doc.child(state, "name");
+  const Field positions = doc.child(state, "position");
+  const std::size_t n = names.node.IsDefined() ? doc.sequenceLength(names) : 0;
+  const std::size_t m = positions.node.IsDefined() ? doc.sequenceLength(positions) : 0;
+  if (n != m) {
+    doc.fail(positions.node.IsDefined() ? positions : names,
+             std::to_string(m) + " positions for " + std::to_string(n) + " joint names");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Field name = doc.element(names, i);
+    const std::string joint = doc.text(name);
+    if (joint.empty()) doc.fail(name, "an empty joint name");
+    const Field position = doc.element(positions, i);
+    const double value = doc.number(position);
+    if (!out.values.emplace(joint, value).second) {
+      doc.fail(name, "joint " + quoted(joint) + " appears twice (first at line " + std::to_string(out.lines[joint]) + ")");
+    }
+    out.lines[joint] = position.line;
+  }
+  return out;
+}
+
+std::string readWholeFile(const std::string& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": " + what + " does not exist");
+  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a " + what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the " + what);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read the " + what);
+  return buffer.str();
+}
+
+}  // namespace adsd::planner::yaml
