@@ -3,7 +3,7 @@
 
   bad_numbers.py NAME=PATH...      (NAME: adsd, adsd_stress, adsd_soak, bench_scenes, bench_distance_vs_fcl,
                                     bench_bands, bench_scene_counters, bench_checker_calls,
-                                    bench_mesh_info)
+                                    bench_mesh_info, bench_arms)
 
 Checks, for each program given: a malformed or out-of-range number ("abc", "-1", "1e3x", "0,5", 0
 where a count must be positive) stops it with exit status 2, exactly one line on stderr naming the
@@ -80,6 +80,14 @@ BAD = {
     "bench_mesh_info": [
         ([], "mesh files"),
         (["--bogus", "x.obj"], "--bogus"),
+    ],
+    "bench_arms": [
+        (["--states", "0"], "--states"),
+        (["--motions", "1e3x"], "--motions"),
+        (["--step", "0,3"], "--step"),
+        (["--step", "-1"], "--step"),
+        (["--rounds", "abc"], "--rounds"),
+        (["--bogus"], "--bogus"),
     ],
     "bench_checker_calls": [
         (["--states", "-1", "x.cfg"], "--states"),
