@@ -1,6 +1,6 @@
-// `adsd benchmark [PROBLEM.cfg] [--checker adsd|fcl|both] [--motion discrete|certified|both]
-//                 [--runs N | --run-range A:B] [--seed S] [--time SECONDS] [--out DIR]
-//                 [--no-plots | --log-only]`
+// `adsd benchmark [PROBLEM.cfg | ARM.cfg | DIR] [--planner NAME[,NAME]] [--checker adsd|fcl|both]
+//                 [--motion discrete|certified|both] [--runs N | --run-range A:B] [--seed S]
+//                 [--time SECONDS] [--out DIR] [--no-plots | --log-only]`
 //
 // Runs OMPL's benchmark (ompl::tools::Benchmark) on a problem file's [benchmark] and [planner]
 // sections for every checker × motion-validator combination asked for, and writes
@@ -22,6 +22,13 @@
 // thread's start and join), and the planner's own queries: validity checks and clearance queries
 // with their time, motion checks. These are read when the planner's solve returns, before the
 // benchmark's bookkeeping (solution checks, clearance, simplification) queries the checker again.
+//
+// Arm problems (arm_planning_problem.h; issue 17) take the same path: an arm `.cfg`, or a directory
+// whose every `problem.cfg` below it is an arm problem (MotionBenchMaker-style folders), one log
+// and database per problem. An arm problem has no [benchmark] or [planner] section: the planners
+// come from --planner (default rrtconnect), the runs from --runs (default 10), the time from
+// --time (default the request's allowed_planning_time, else 10 s). Both problem kinds are held
+// behind BenchmarkedProblem, so everything after the set-up is shared.
 //
 // Exit status: 0 done; 1 a tool failed or no run was recorded; 2 bad input (one line naming the
 // file, line and key, or the option).
@@ -54,6 +61,8 @@
 
 #include "adsd/cli/command_line.h"
 #include "adsd/error.h"
+#include "adsd/planner/arm_planning_problem.h"
+#include "adsd/planner/motion_plan_request_yaml.h"
 #include "adsd/planner/planner_registry.h"
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
@@ -71,9 +80,9 @@ namespace ob = ompl::base;
 namespace ot = ompl::tools;
 
 const char* const kSynopsis =
-    "adsd benchmark [PROBLEM.cfg] [--checker adsd|fcl|both] [--motion discrete|certified|both]\n"
-    "                      [--runs N | --run-range A:B] [--seed S] [--time SECONDS] [--out DIR]\n"
-    "                      [--no-plots | --log-only]";
+    "adsd benchmark [PROBLEM.cfg | ARM.cfg | DIR] [--planner NAME[,NAME]] [--checker adsd|fcl|both]\n"
+    "                      [--motion discrete|certified|both] [--runs N | --run-range A:B] [--seed S]\n"
+    "                      [--time SECONDS] [--out DIR] [--no-plots | --log-only]";
 
 const char* const kDescription =
     "Runs OMPL's benchmark on the problem's [benchmark] and [planner] sections for each checker and\n"
@@ -81,9 +90,17 @@ const char* const kDescription =
     "ompl_benchmark_statistics into DIR/STEM.db and plots it (bench/planning/plot_benchmark.py).";
 
 const char* const kDetails =
+    "An arm problem (ARM.cfg, or every problem.cfg under DIR) is benchmarked the same way, one log per\n"
+    "problem: planners from --planner (default rrtconnect), --runs default 10, --time default the\n"
+    "request's allowed_planning_time, else 10 s.\n"
     "STEM is the problem's name, plus .runs-A-B for a run range and .seed-S for a seed, so that every\n"
     "shard writes its own files. Exit status: 0 done; 1 a tool failed or no run was recorded; 2 bad\n"
     "input or usage (one line naming the file, line and key, or the option).\n";
+
+/// An arm problem has no [benchmark] section: its run count unless --runs says otherwise.
+constexpr unsigned kArmRunCount = 10;
+/// ... and its time limit (seconds) when neither --time nor the request's allowed_planning_time says.
+constexpr double kArmTimeLimit = 10.0;
 
 /// OMPL's RNG takes no seed 0. A shard of runs [A, B) without --seed is seeded with
 /// A + kShardSeedOffset: shards get different seeds, and a shard run again gets the same one.
@@ -104,6 +121,7 @@ const char* const kStatisticsProgram = "ompl_benchmark_statistics";
 
 struct BenchmarkArguments {
   std::string problem;
+  std::vector<std::string> planners;  ///< --planner, split at commas; empty: the file's (arm: rrtconnect)
   std::vector<CheckerKind> checkers{CheckerKind::adsd, CheckerKind::fcl};
   std::vector<MotionKind> motions{MotionKind::discrete, MotionKind::certified};
   std::optional<unsigned> runs;
@@ -121,12 +139,15 @@ std::optional<BenchmarkArguments> parseArguments(const std::vector<std::string>&
   constexpr std::uint64_t kMaxSeed = std::numeric_limits<std::uint32_t>::max();
   cli::CommandLine line("adsd benchmark", kSynopsis, kDescription, kDetails);
   line.options()
+      ("planner", cli::value("NAME[,NAME]"),
+       "planners to benchmark, instead of the file's [planner] entries (default for an arm problem: rrtconnect)")
       ("checker", cli::value("adsd|fcl|both"), "state validity checkers (default both)")
       ("motion", cli::value("discrete|certified|both"), "motion validators (default both)")
-      ("runs", cli::value("N"), "runs per planner and combination (default: [benchmark] run_count)")
+      ("runs", cli::value("N"), "runs per planner and combination (default: [benchmark] run_count; arm: 10)")
       ("run-range", cli::value("A:B"), "this shard's runs: indices A to B-1 (seed A+1 unless --seed)")
       ("seed", cli::value("S"), "OMPL's random seed (1 to 4294967295; default: OMPL's own)")
-      ("time", cli::value("SECONDS"), "time limit per run, > 0 (default: [benchmark] time_limit)")
+      ("time", cli::value("SECONDS"),
+       "time limit per run, > 0 (default: [benchmark] time_limit; arm: allowed_planning_time, else 10)")
       ("out", cli::value("DIR"), "output directory (default: [benchmark] output, else the current one)")
       ("no-plots", "database and summary table, no plots")
       ("log-only", "the log only (merge shards' logs later with ompl_benchmark_statistics)");
@@ -138,6 +159,20 @@ std::optional<BenchmarkArguments> parseArguments(const std::vector<std::string>&
   const std::vector<std::string> problems = given->texts("problem");
   if (problems.size() > 1) {
     throw cli::UsageError("more than one problem file ('" + problems[0] + "', '" + problems[1] + "')");
+  }
+  if (const auto planners = given->text("planner")) {
+    std::istringstream names(*planners);
+    std::string n;
+    while (std::getline(names, n, ',')) {
+      const auto& known = knownPlannerNames();
+      if (std::find(known.begin(), known.end(), n) == known.end()) {
+        std::string list;
+        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        throw cli::UsageError("--planner: no planner named '" + n + "' (known: " + list + ")");
+      }
+      a.planners.push_back(n);
+    }
+    if (a.planners.empty()) throw cli::UsageError("--planner: expected NAME[,NAME], got ''");
   }
   if (const auto checker = given->choice("checker", {"adsd", "fcl", "both"})) {
     if (*checker == "adsd") a.checkers = {CheckerKind::adsd};
@@ -252,11 +287,60 @@ struct RunQueries {
   std::optional<std::uint64_t> certifiedSteps;  ///< certified validator only
 };
 
+/// What a certified motion validator has done (rigid: CertifiedMotionValidator's MotionCounts; arm:
+/// ArmMotionValidator's ArmMotionCounts).
+struct CertifiedCounts {
+  std::uint64_t motions = 0;
+  std::uint64_t rejected = 0;
+  std::uint64_t clearanceSteps = 0;  ///< clearance queries spent certifying motions
+};
+CertifiedCounts certifiedCounts(const MotionCounts& m) { return {m.motions, m.rejected, m.clearanceSteps}; }
+CertifiedCounts certifiedCounts(const ArmMotionCounts& m) { return {m.motions, m.rejected, m.clearanceQueries}; }
+
+/// \brief What the benchmark needs of a problem, rigid body (PlanningProblem) or arm
+/// (ArmPlanningProblem): its SimpleSetup and its counters.
+class BenchmarkedProblem {
+ public:
+  virtual ~BenchmarkedProblem() = default;
+  virtual ompl::geometric::SimpleSetup& setup() = 0;
+  virtual const ob::SpaceInformationPtr& spaceInformation() const = 0;
+  virtual QueryCounts counts() const = 0;
+  /// \brief The checker's counters, and the certified validator's when there is one.
+  virtual void resetCounts() = 0;
+  /// \brief The certified validator's counts, or nullopt when OMPL's discrete validator is in use.
+  virtual std::optional<CertifiedCounts> certified() const = 0;
+  virtual const std::vector<std::string>& warnings() const = 0;
+};
+
+/// BenchmarkedProblem over either problem type (both have the same members; only their motion
+/// counts' types differ, which certifiedCounts() reconciles).
+template <class Problem>
+class BenchmarkedProblemOf final : public BenchmarkedProblem {
+ public:
+  template <class File>
+  BenchmarkedProblemOf(const File& file, const CheckingOptions& options) : problem_(file, options) {}
+  ompl::geometric::SimpleSetup& setup() override { return problem_.setup(); }
+  const ob::SpaceInformationPtr& spaceInformation() const override { return problem_.spaceInformation(); }
+  QueryCounts counts() const override { return problem_.checker()->counts(); }
+  void resetCounts() override {
+    problem_.checker()->resetCounts();
+    if (const auto& certified = problem_.certifiedValidator()) certified->resetCounts();
+  }
+  std::optional<CertifiedCounts> certified() const override {
+    if (const auto& certified = problem_.certifiedValidator()) return certifiedCounts(certified->counts());
+    return std::nullopt;
+  }
+  const std::vector<std::string>& warnings() const override { return problem_.warnings(); }
+
+ private:
+  Problem problem_;
+};
+
 /// One checker × motion validator: its own problem (checker, validator, SimpleSetup) and benchmark.
 struct Combination {
   CheckerKind checker = CheckerKind::adsd;
   MotionKind motion = MotionKind::discrete;
-  std::unique_ptr<PlanningProblem> problem;
+  std::unique_ptr<BenchmarkedProblem> problem;
   std::unique_ptr<ot::Benchmark> benchmark;
   /// Written by the planning thread when solve returns; read in the post-run event, which runs
   /// after Benchmark has joined that thread.
@@ -270,9 +354,9 @@ struct Combination {
 void captureQueries(Combination& c, double plannerSeconds) {
   RunQueries& r = c.atSolveEnd;
   r.plannerSeconds = plannerSeconds;
-  r.queries = c.problem->checker()->counts();
-  if (const auto& certified = c.problem->certifiedValidator()) {
-    const MotionCounts m = certified->counts();
+  r.queries = c.problem->counts();
+  if (const auto certified = c.problem->certified()) {
+    const CertifiedCounts& m = *certified;
     r.motionChecks = m.motions;
     r.motionsRejected = m.rejected;
     r.certifiedSteps = m.clearanceSteps;
@@ -300,11 +384,11 @@ void addRunProperties(const Combination& c, unsigned runIndex, ot::Benchmark::Ru
   run["checker STRING"] = name(c.checker);
   run["motion validator STRING"] = name(c.motion);
   run["run index INTEGER"] = std::to_string(runIndex);
-  if (const auto& certified = c.problem->certifiedValidator()) {
+  if (const auto certified = c.problem->certified()) {
     // OMPL's "valid segment fraction" reads the base class's counters, which the certified
     // validator does not write (they are not atomic); give the same fraction from its own counts,
     // over the same span as OMPL's (every motion check since the run began, bookkeeping included).
-    const MotionCounts m = certified->counts();
+    const CertifiedCounts& m = *certified;
     run["valid segment fraction REAL"] =
         real(m.motions == 0 ? 0.0 : static_cast<double>(m.motions - m.rejected) / static_cast<double>(m.motions));
   }
@@ -491,54 +575,127 @@ ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, const ob::SpaceI
   return planner;
 }
 
-int benchmark(const std::vector<std::string>& args) {
-  const std::optional<BenchmarkArguments> parsed = parseArguments(args);
-  if (!parsed) return 0;  // the help
-  const BenchmarkArguments& a = *parsed;
-  const ProblemFile file = readProblemFile(a.problem);
-  for (const std::string& w : file.warnings) std::cerr << "adsd benchmark: warning: " << w << '\n';
-  if (file.benchmark.savePaths && *file.benchmark.savePaths != "none") {
-    std::cerr << "adsd benchmark: warning: " << file.path
+/// \brief One problem to benchmark, of either kind: what the shared machinery needs of it.
+struct BenchmarkInput {
+  std::string path;  ///< the .cfg as given
+  std::string name;
+  std::string kind;  ///< "SE(2)", "SE(3)" or "arm ROBOT-FILE-STEM"
+  std::vector<PlannerEntry> planners;
+  unsigned runCount = kArmRunCount;  ///< without --runs or --run-range
+  ot::Benchmark::Request request;    ///< maxTime, maxMem and simplify set; the rest benchmarkOne's
+  std::optional<std::string> output;  ///< the file's output directory
+  /// A problem for one checker × motion validator.
+  std::function<std::unique_ptr<BenchmarkedProblem>(const CheckingOptions&)> make;
+};
+
+/// PlannerEntry for a --planner name.
+std::vector<PlannerEntry> plannersNamed(const std::vector<std::string>& names) {
+  std::vector<PlannerEntry> entries;
+  for (const std::string& n : names) {
+    PlannerEntry entry;
+    entry.name = n;
+    entry.label = n;
+    entries.push_back(entry);
+  }
+  return entries;
+}
+
+/// An OMPL.app problem file (problem_file.h).
+BenchmarkInput rigidInput(const BenchmarkArguments& a, const std::string& path) {
+  auto file = std::make_shared<const ProblemFile>(readProblemFile(path));
+  for (const std::string& w : file->warnings) std::cerr << "adsd benchmark: warning: " << w << '\n';
+  if (file->benchmark.savePaths && *file->benchmark.savePaths != "none") {
+    std::cerr << "adsd benchmark: warning: " << file->path
               << ": key 'benchmark.save_paths': saving paths is not supported, ignored\n";
   }
-
-  // The tools first: a missing one must stop us before the runs, not after them.
-  std::string statistics;
-  const std::string plotter = ADSD_PLOT_BENCHMARK_SCRIPT;
-  if (!a.logOnly) {
-    const auto found = findOnPath(kStatisticsProgram);
-    if (!found) {
-      throw ToolFailure(std::string(kStatisticsProgram) +
-                        " is not on PATH (Debian package ompl-demos); --log-only writes the log without it");
-    }
-    statistics = *found;
-    if (::access(kPython, X_OK) != 0) throw ToolFailure(std::string(kPython) + " is missing (Debian package python3)");
-    if (plotter.empty() || !fs::is_regular_file(plotter)) {
-      throw ToolFailure("the plotting script '" + plotter + "' is missing (bench/planning/plot_benchmark.py)");
-    }
-  }
-
-  // Which runs, and the seed: set before anything draws a random number (OMPL seeds every new
-  // generator from one seeded generator).
-  const unsigned firstRun = a.runRange ? a.runRange->first : 0;
   const ot::Benchmark::Request defaults;
-  const unsigned runCount = a.runRange ? a.runRange->second - a.runRange->first
-                                       : a.runs.value_or(static_cast<unsigned>(file.benchmark.runCount.value_or(
-                                             static_cast<int>(defaults.runCount))));
-  std::optional<std::uint64_t> seed = a.seed;
-  if (!seed && a.runRange) seed = a.runRange->first + kShardSeedOffset;
-  if (seed) ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(*seed));
+  BenchmarkInput in;
+  in.path = path;
+  in.name = file->name;
+  in.kind = file->space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)";
+  in.planners = a.planners.empty() ? plannersOf(*file) : plannersNamed(a.planners);
+  in.runCount = static_cast<unsigned>(file->benchmark.runCount.value_or(static_cast<int>(defaults.runCount)));
+  in.request.maxTime = a.seconds.value_or(file->benchmark.timeLimit.value_or(defaults.maxTime));
+  in.request.maxMem = file->benchmark.memoryLimit.value_or(defaults.maxMem);
+  in.request.simplify = file->benchmark.simplify.value_or(defaults.simplify);
+  in.output = file->benchmark.output;
+  in.make = [file](const CheckingOptions& options) {
+    return std::make_unique<BenchmarkedProblemOf<PlanningProblem>>(*file, options);
+  };
+  return in;
+}
 
-  ot::Benchmark::Request request;
-  request.maxTime = a.seconds.value_or(file.benchmark.timeLimit.value_or(defaults.maxTime));
-  request.maxMem = file.benchmark.memoryLimit.value_or(defaults.maxMem);
+/// An arm problem `.cfg` (arm_planning_problem.h).
+BenchmarkInput armInput(const BenchmarkArguments& a, const std::string& path) {
+  auto file = std::make_shared<const MotionBenchMakerProblem>(readMotionBenchMakerProblem(path));
+  for (const std::string& w : file->warnings) std::cerr << "adsd benchmark: warning: " << w << '\n';
+  const ot::Benchmark::Request defaults;
+  BenchmarkInput in;
+  in.path = path;
+  in.name = file->name;
+  in.kind = "arm " + fs::path(file->robotPath).stem().string();
+  in.planners = plannersNamed(a.planners.empty() ? std::vector<std::string>{"rrtconnect"} : a.planners);
+  in.runCount = kArmRunCount;
+  // The request's allowed_planning_time; a request that cannot be read is reported by the problem,
+  // which is built before any run (naming the cfg's line for a missing file).
+  std::optional<double> allowed;
+  std::error_code ec;
+  if (!a.seconds && fs::is_regular_file(file->requestPath, ec)) {
+    allowed = readMotionPlanRequestYaml(file->requestPath).allowedPlanningTime;
+  }
+  in.request.maxTime = a.seconds.value_or(allowed.value_or(kArmTimeLimit));
+  in.request.maxMem = defaults.maxMem;
+  in.request.simplify = defaults.simplify;
+  in.make = [file](const CheckingOptions& options) {
+    return std::make_unique<BenchmarkedProblemOf<ArmPlanningProblem>>(*file, options);
+  };
+  return in;
+}
+
+/// The problems \p a names: a problem file (either kind), or every `problem.cfg` under a
+/// directory, in path order (each an arm problem).
+std::vector<BenchmarkInput> inputsOf(const BenchmarkArguments& a) {
+  std::error_code ec;
+  if (!fs::is_directory(a.problem, ec)) {
+    return {isArmProblemFile(a.problem) ? armInput(a, a.problem) : rigidInput(a, a.problem)};
+  }
+  std::vector<std::string> found;
+  for (fs::recursive_directory_iterator it(a.problem, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().filename() == "problem.cfg" && it->is_regular_file()) found.push_back(it->path().string());
+  }
+  if (ec) throw InputError(a.problem + ": cannot list the directory: " + ec.message());
+  std::sort(found.begin(), found.end());
+  if (found.empty()) throw InputError(a.problem + ": no problem.cfg under this directory");
+  std::vector<BenchmarkInput> inputs;
+  for (const std::string& path : found) {
+    if (!isArmProblemFile(path)) {
+      throw InputError(path + ": not an arm problem (no 'request' key in [problem]); a directory holds arm problems");
+    }
+    inputs.push_back(armInput(a, path));
+  }
+  return inputs;
+}
+
+/// The external tools the database and plots need (empty with --log-only).
+struct Tools {
+  std::string statistics;
+  std::string plotter;
+};
+
+/// Benchmarks one problem: its combinations, runs, log, database and plots.
+void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, const Tools& tools,
+                  const std::optional<std::uint64_t>& seed) {
+  // Which runs.
+  const unsigned firstRun = a.runRange ? a.runRange->first : 0;
+  const unsigned runCount = a.runRange ? a.runRange->second - a.runRange->first : a.runs.value_or(input.runCount);
+
+  ot::Benchmark::Request request = input.request;
   request.runCount = 1;  // one run per call: the combinations take turns run by run
   request.displayProgress = false;
   request.saveConsoleOutput = false;  // OMPL would write ompl_HOST_DATE.console into the current directory
-  request.simplify = file.benchmark.simplify.value_or(defaults.simplify);
 
   // Everything that can be wrong with the input is found here, before any file is written.
-  const std::vector<PlannerEntry> entries = plannersOf(file);
+  const std::vector<PlannerEntry>& entries = input.planners;
   std::vector<std::unique_ptr<Combination>> combinations;
   unsigned currentRun = 0;
   std::unique_ptr<ProgressBar> progress;
@@ -550,12 +707,12 @@ int benchmark(const std::vector<std::string>& args) {
       CheckingOptions options;
       options.checker = checker;
       options.motion = motion;
-      c->problem = std::make_unique<PlanningProblem>(file, options);
+      c->problem = input.make(options);
       const bool first = combinations.empty();
       if (first) {
         for (const std::string& w : c->problem->warnings()) std::cerr << "adsd benchmark: warning: " << w << '\n';
       }
-      c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), file.name);
+      c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), input.name);
       Combination* self = c.get();
       for (const PlannerEntry& entry : entries) {
         ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->spaceInformation(), first);
@@ -565,8 +722,7 @@ int benchmark(const std::vector<std::string>& args) {
       }
       c->benchmark->setPreRunEvent([self, &currentRun, &progress, runCount](const ob::PlannerPtr& planner) {
         // Benchmark has just reset the discrete validator's counters; ours are reset here.
-        self->problem->checker()->resetCounts();
-        if (const auto& certified = self->problem->certifiedValidator()) certified->resetCounts();
+        self->problem->resetCounts();
         self->atSolveEnd = RunQueries{};
         progress->starting("run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount) + "  " +
                            planner->getName());
@@ -581,8 +737,8 @@ int benchmark(const std::vector<std::string>& args) {
   }
 
   const fs::path directory = a.outDirectory ? fs::path(*a.outDirectory)
-                                            : (file.benchmark.output ? fs::path(*file.benchmark.output) : fs::path("."));
-  std::string stem = fileStem(file.name);
+                                            : (input.output ? fs::path(*input.output) : fs::path("."));
+  std::string stem = fileStem(input.name);
   if (a.runRange) stem += ".runs-" + std::to_string(a.runRange->first) + "-" + std::to_string(a.runRange->second);
   if (a.seed) stem += ".seed-" + std::to_string(*a.seed);
   std::error_code error;
@@ -596,15 +752,13 @@ int benchmark(const std::vector<std::string>& args) {
 
   const std::size_t plannerCount = entries.size();
   std::printf("benchmark   %s (%s, %s): %zu planner(s) x %zu combination(s) x %u run(s)%s, %g s and %g MB per run\n",
-              file.name.c_str(), file.space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)", a.problem.c_str(), plannerCount,
-              combinations.size(), runCount,
+              input.name.c_str(), input.kind.c_str(), input.path.c_str(), plannerCount, combinations.size(), runCount,
               a.runRange ? (" (runs " + std::to_string(firstRun) + " to " + std::to_string(firstRun + runCount - 1) + ")").c_str()
                          : "",
               request.maxTime, request.maxMem);
   std::printf("seed        %llu%s\n", static_cast<unsigned long long>(ompl::RNG::getSeed()),
               seed ? (a.seed ? " (--seed)" : " (first run + 1)") : " (OMPL's choice)");
   std::fflush(stdout);
-
   // The runs. Combinations take turns run by run, starting one further along each time, so that a
   // machine that slows down or speeds up (other jobs on shared cores) affects all of them alike.
   // The log lists combination k's planners at k * plannerCount onwards: every combination's
@@ -632,7 +786,7 @@ int benchmark(const std::vector<std::string>& args) {
   progress->close();
   const double totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  experiment->name = file.name;
+  experiment->name = input.name;
   experiment->runCount = runCount;
   experiment->totalDuration = totalSeconds;
   experiment->seed = ompl::RNG::getSeed();
@@ -651,12 +805,12 @@ int benchmark(const std::vector<std::string>& args) {
 
   log.write(*experiment);
   std::printf("log         %s (%zu runs in %.1f s)\n", logPath.c_str(), recorded, totalSeconds);
-  if (a.logOnly) return 0;
+  if (a.logOnly) return;
 
   // The database, through a temporary name: ompl_benchmark_statistics writes it in place.
   const std::string temporaryDatabase = databasePath.string() + ".tmp";
   fs::remove(temporaryDatabase, error);
-  const std::vector<std::string> convert = {statistics, logPath.string(), "-d", temporaryDatabase};
+  const std::vector<std::string> convert = {tools.statistics, logPath.string(), "-d", temporaryDatabase};
   if (runProgram(convert, true) != 0 || !fs::is_regular_file(temporaryDatabase)) {
     fs::remove(temporaryDatabase, error);
     throw ToolFailure("'" + commandLine(convert) + "' failed");
@@ -666,9 +820,40 @@ int benchmark(const std::vector<std::string>& args) {
   std::printf("database    %s\n", databasePath.c_str());
   std::fflush(stdout);
 
-  std::vector<std::string> draw = {kPython, plotter, databasePath.string(), "--out", directory.string(), "--prefix", stem};
+  std::vector<std::string> draw = {kPython, tools.plotter, databasePath.string(), "--out", directory.string(), "--prefix", stem};
   if (!a.plots) draw.push_back("--no-plots");
   if (runProgram(draw, false) != 0) throw ToolFailure("'" + commandLine(draw) + "' failed");
+}
+
+int benchmark(const std::vector<std::string>& args) {
+  const std::optional<BenchmarkArguments> parsed = parseArguments(args);
+  if (!parsed) return 0;  // the help
+  const BenchmarkArguments& a = *parsed;
+  // Every problem's files read before any run (each problem's checkers are built before its runs).
+  const std::vector<BenchmarkInput> inputs = inputsOf(a);
+
+  // The tools first: a missing one must stop us before the runs, not after them.
+  Tools tools;
+  tools.plotter = ADSD_PLOT_BENCHMARK_SCRIPT;
+  if (!a.logOnly) {
+    const auto found = findOnPath(kStatisticsProgram);
+    if (!found) {
+      throw ToolFailure(std::string(kStatisticsProgram) +
+                        " is not on PATH (Debian package ompl-demos); --log-only writes the log without it");
+    }
+    tools.statistics = *found;
+    if (::access(kPython, X_OK) != 0) throw ToolFailure(std::string(kPython) + " is missing (Debian package python3)");
+    if (tools.plotter.empty() || !fs::is_regular_file(tools.plotter)) {
+      throw ToolFailure("the plotting script '" + tools.plotter + "' is missing (bench/planning/plot_benchmark.py)");
+    }
+  }
+
+  // The seed: set before anything draws a random number (OMPL seeds every new generator from one
+  // seeded generator).
+  std::optional<std::uint64_t> seed = a.seed;
+  if (!seed && a.runRange) seed = a.runRange->first + kShardSeedOffset;
+  if (seed) ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(*seed));
+  for (const BenchmarkInput& input : inputs) benchmarkOne(a, input, tools, seed);
   return 0;
 }
 

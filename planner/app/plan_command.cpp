@@ -5,9 +5,16 @@
 // Solves a problem file (the default problem without one), simplifies the path, prints a summary
 // and writes the path in OMPL.app's .path format. Exit status: 0 solved, 1 not solved within the
 // time, 2 bad input (one line naming the file, line and key).
+//
+// An arm problem (arm_planning_problem.h: a .cfg whose [problem] has a `request` key) is planned in
+// joint space with the same options, except --html (the viewer does not show arms yet): the
+// planner defaults to rrtconnect, the time to the request's allowed_planning_time, and the path
+// file has a "# joints: ..." header and one line of joint values per state.
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -19,6 +26,8 @@
 
 #include "adsd/cli/command_line.h"
 #include "adsd/error.h"
+#include "adsd/planner/arm_planning_problem.h"
+#include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/path_report.h"
 #include "adsd/planner/planner_registry.h"
 #include "adsd/planner/planning_problem.h"
@@ -53,7 +62,9 @@ const char* const kSynopsis =
 
 const char* const kDescription =
     "Solves a problem file (OMPL.app's .cfg; the default problem without one) with the adsd validity\n"
-    "checker, simplifies the path, prints a summary and writes the path in OMPL.app's .path format.";
+    "checker, simplifies the path, prints a summary and writes the path in OMPL.app's .path format.\n"
+    "An arm problem (a .cfg whose [problem] has a request key, docs/problem-files.md) is planned in\n"
+    "joint space; its path file has one line of joint values per state.";
 
 const char* const kDetails =
     "Exit status: 0 solved, 1 not solved within the time, 2 bad input or usage (one line naming the\n"
@@ -64,7 +75,8 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
   cli::CommandLine line("adsd plan", kSynopsis, kDescription, kDetails);
   line.options()
       ("planner", cli::value("NAME"), "the planner (default: the file's first [planner], else rrtconnect)")
-      ("time", cli::value("SECONDS"), "time limit, > 0 (default: [benchmark] time_limit, else 10)")
+      ("time", cli::value("SECONDS"),
+       "time limit, > 0 (default: [benchmark] time_limit, for an arm the request's allowed_planning_time, else 10)")
       ("objective", cli::value("length|clearance"), "optimization objective (default: the file's)")
       ("checker", cli::value("adsd|fcl"), "state validity checker (default adsd)")
       ("motion", cli::value("discrete|certified"), "motion validator (default discrete)")
@@ -110,6 +122,17 @@ const char* name(CheckerKind k) { return k == CheckerKind::adsd ? "adsd" : "fcl"
 const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" : "certified"; }
 const char* name(ObjectiveKind k) { return k == ObjectiveKind::length ? "length" : "max_min_clearance"; }
 
+/// The planner named \p chosen, or an InputError listing the known names.
+ompl::base::PlannerPtr makeNamedPlanner(const std::string& chosen, const ompl::base::SpaceInformationPtr& si) {
+  ompl::base::PlannerPtr planner = makePlanner(chosen, si);
+  if (!planner) {
+    std::string known;
+    for (const std::string& n : knownPlannerNames()) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("--planner: no planner named '" + chosen + "' (known: " + known + ")");
+  }
+  return planner;
+}
+
 /// The planner: --planner, else the file's first [planner] entry, else RRTConnect. The file's
 /// parameters for that planner apply either way.
 ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& file, PlanningProblem& problem,
@@ -129,12 +152,7 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   } else {
     chosen = "rrtconnect";
   }
-  ompl::base::PlannerPtr planner = makePlanner(chosen, problem.spaceInformation());
-  if (!planner) {
-    std::string known;
-    for (const std::string& n : knownPlannerNames()) known += (known.empty() ? "" : ", ") + n;
-    throw InputError("--planner: no planner named '" + chosen + "' (known: " + known + ")");
-  }
+  ompl::base::PlannerPtr planner = makeNamedPlanner(chosen, problem.spaceInformation());
   if (entry != nullptr) {
     for (const Setting& s : entry->parameters) {
       if (!planner->params().hasParam(s.key)) {
@@ -156,12 +174,121 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   return planner;
 }
 
+/// What one solve did: status, times and the planner's own queries (before the simplifier's).
+struct SolveReport {
+  ompl::base::PlannerStatus status;
+  bool solved = false;
+  double planningSeconds = 0.0;
+  double simplifySeconds = 0.0;
+  QueryCounts counts;
+};
+
+/// Solves \p ss within \p seconds, reads \p checker's counts when the planner returns (the
+/// planner's own queries), then simplifies a solution unless told not to.
+template <class Checker>
+SolveReport solveAndSimplify(ompl::geometric::SimpleSetup& ss, const Checker& checker, double seconds, bool simplify,
+                             const std::function<void()>& atSolveEnd) {
+  SolveReport r;
+  ss.setup();
+  const ompl::time::point started = ompl::time::now();
+  r.status = ss.solve(seconds);
+  r.planningSeconds = ompl::time::seconds(ompl::time::now() - started);
+  r.solved = r.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
+  r.counts = checker.counts();
+  atSolveEnd();
+  if (r.solved && simplify) {
+    const ompl::time::point s = ompl::time::now();
+    ss.simplifySolution(seconds);
+    r.simplifySeconds = ompl::time::seconds(ompl::time::now() - s);
+  }
+  return r;
+}
+
+/// The summary lines every problem kind prints after its "problem" and "setup" lines.
+void printSolveReport(const PlanArguments& a, const SolveReport& r) {
+  std::printf("seed        %lu%s\n", static_cast<unsigned long>(ompl::RNG::getSeed()), a.seed ? " (--seed)" : "");
+  std::printf("solved      %s (%s)\n", r.solved ? "yes" : "no", r.status.asString().c_str());
+  std::printf("time        %.3f s planning, %.3f s simplifying\n", r.planningSeconds, r.simplifySeconds);
+  std::printf("queries     planning: %llu validity checks (mean %.2f us), %llu clearance queries (mean %.2f us)\n",
+              static_cast<unsigned long long>(r.counts.validityChecks), 1e6 * r.counts.meanValiditySeconds(),
+              static_cast<unsigned long long>(r.counts.clearanceQueries), 1e6 * r.counts.meanClearanceSeconds());
+}
+
+/// Spacing of the states at which an arm path's clearance is measured: joint-space distance (the
+/// sum of the joints' absolute changes, radians for turning joints), 0.01 rad, where a link 1 m
+/// from its joint's axis moves at most 1 cm.
+constexpr double kArmClearanceStep = 0.01;
+
+/// `adsd plan ARM.cfg`: an arm problem (arm_planning_problem.h).
+int planArm(const PlanArguments& a) {
+  if (a.htmlFile) {
+    throw cli::UsageError("--html: the browser viewer does not show arms yet ('" + a.problem + "' is an arm problem)");
+  }
+  const MotionBenchMakerProblem file = readMotionBenchMakerProblem(a.problem);
+  CheckingOptions options;
+  options.checker = a.checker;
+  options.motion = a.motion;
+  options.objective = a.objective;
+  ArmPlanningProblem problem(file, options);
+  for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';
+
+  const std::string plannerName = a.planner.value_or("rrtconnect");
+  ompl::geometric::SimpleSetup& ss = problem.setup();
+  ss.setPlanner(makeNamedPlanner(plannerName, problem.spaceInformation()));
+  const double seconds = a.seconds.value_or(problem.allowedPlanningTime().value_or(10.0));
+
+  ArmMotionCounts certified;
+  std::uint64_t discreteMotions = 0;
+  const SolveReport r = solveAndSimplify(ss, *problem.checker(), seconds, a.simplify, [&] {
+    if (problem.certifiedValidator()) {
+      certified = problem.certifiedValidator()->counts();
+    } else {
+      discreteMotions = problem.spaceInformation()->getMotionValidator()->getCheckedMotionCount();
+    }
+  });
+
+  std::printf("problem     %s (arm %s, %zu joints, %s)\n", problem.name().c_str(), problem.model().name.c_str(),
+              problem.model().dof(), a.problem.c_str());
+  std::printf("setup       planner %s, checker %s, motion %s, objective %s, time limit %g s\n", plannerName.c_str(),
+              name(a.checker), name(a.motion), name(problem.objective()), seconds);
+  printSolveReport(a, r);
+  if (problem.certifiedValidator()) {
+    std::printf("motions     planning: %llu certified checks, %llu rejected, %llu clearance queries\n",
+                static_cast<unsigned long long>(certified.motions), static_cast<unsigned long long>(certified.rejected),
+                static_cast<unsigned long long>(certified.clearanceQueries));
+  } else {
+    std::printf("motions     planning: %llu discrete checks\n", static_cast<unsigned long long>(discreteMotions));
+  }
+  if (!r.solved) return 1;
+
+  const ompl::geometric::PathGeometric& path = ss.getSolutionPath();
+  // The clearance at states kArmClearanceStep apart along the path (a copy), finer than the
+  // validity-checking resolution (1% of the joint space's extent, tenths of a radian).
+  ompl::geometric::PathGeometric dense(path);
+  dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / kArmClearanceStep)) + 1);
+  const PathMeasures measures = measurePath(dense, *problem.checker());
+  const auto& space = problem.spaceInformation()->getStateSpace();
+  std::printf("path        %zu states, length %.6g (joint space: the sum of the joints' absolute changes)\n",
+              path.getStateCount(), measures.length);
+  std::printf("clearance   min %.6g m, mean %.6g m (%s, at %zu states: the path interpolated every %g in joint space)\n",
+              measures.minClearance, measures.meanClearance, a.checker == CheckerKind::adsd ? "exact" : "FCL's distance",
+              measures.statesSampled, kArmClearanceStep);
+  if (a.pathFile) {
+    std::vector<std::string> joints;
+    for (const std::size_t j : problem.model().activeJoints) joints.push_back(problem.model().joints[j].name);
+    writeArmPathFile(*a.pathFile, path, static_cast<const ArmStateSpace&>(*space), joints);
+    std::printf("path file   %s\n", a.pathFile->c_str());
+  }
+  return 0;
+}
+
 int plan(const std::vector<std::string>& args) {
   const std::optional<PlanArguments> parsed = parseArguments(args);
   if (!parsed) return 0;  // the help
   const PlanArguments& a = *parsed;
   // Before anything draws a random number: OMPL seeds every new generator from one seeded one.
   if (a.seed) ompl::RNG::setSeed(*a.seed);
+  if (isArmProblemFile(a.problem)) return planArm(a);
   const ProblemFile file = readProblemFile(a.problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd plan: warning: " << w << '\n';
 
@@ -177,40 +304,23 @@ int plan(const std::vector<std::string>& args) {
   ss.setPlanner(choosePlanner(a, file, problem, plannerName));
   const double seconds = a.seconds.value_or(file.benchmark.timeLimit.value_or(10.0));
 
-  ss.setup();
-  const ompl::time::point started = ompl::time::now();
-  const ompl::base::PlannerStatus status = ss.solve(seconds);
-  const double planningSeconds = ompl::time::seconds(ompl::time::now() - started);
-  const bool solved = status == ompl::base::PlannerStatus::EXACT_SOLUTION;
-  // The planner's own queries, before the simplifier adds its own.
-  const QueryCounts counts = problem.checker()->counts();
-  const MotionCounts motionCounts =
-      problem.certifiedValidator() ? problem.certifiedValidator()->counts() : MotionCounts{};
-
-  double simplifySeconds = 0.0;
-  if (solved && a.simplify) {
-    const ompl::time::point s = ompl::time::now();
-    ss.simplifySolution(seconds);
-    simplifySeconds = ompl::time::seconds(ompl::time::now() - s);
-  }
+  MotionCounts motionCounts;
+  const SolveReport r = solveAndSimplify(ss, *problem.checker(), seconds, a.simplify, [&] {
+    if (problem.certifiedValidator()) motionCounts = problem.certifiedValidator()->counts();
+  });
 
   std::printf("problem     %s (%s, %s)\n", file.name.c_str(), file.space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)",
               a.problem.c_str());
   std::printf("setup       planner %s, checker %s, motion %s, objective %s, time limit %g s\n", plannerName.c_str(),
               name(a.checker), name(a.motion), name(problem.objective()), seconds);
-  std::printf("seed        %lu%s\n", static_cast<unsigned long>(ompl::RNG::getSeed()), a.seed ? " (--seed)" : "");
-  std::printf("solved      %s (%s)\n", solved ? "yes" : "no", status.asString().c_str());
-  std::printf("time        %.3f s planning, %.3f s simplifying\n", planningSeconds, simplifySeconds);
-  std::printf("queries     planning: %llu validity checks (mean %.2f us), %llu clearance queries (mean %.2f us)\n",
-              static_cast<unsigned long long>(counts.validityChecks), 1e6 * counts.meanValiditySeconds(),
-              static_cast<unsigned long long>(counts.clearanceQueries), 1e6 * counts.meanClearanceSeconds());
+  printSolveReport(a, r);
   if (problem.certifiedValidator()) {
     const MotionCounts& m = motionCounts;
     std::printf("motions     planning: %llu certified checks, %llu rejected, %llu clearance steps\n",
                 static_cast<unsigned long long>(m.motions), static_cast<unsigned long long>(m.rejected),
                 static_cast<unsigned long long>(m.clearanceSteps));
   }
-  if (!solved) return 1;
+  if (!r.solved) return 1;
 
   const ompl::geometric::PathGeometric& path = ss.getSolutionPath();
   const PathMeasures measures = measurePath(path, *problem.checker());

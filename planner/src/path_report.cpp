@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <limits>
 
@@ -16,7 +17,7 @@ namespace adsd::planner {
 
 namespace ob = ompl::base;
 
-PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const RigidBodyValidityChecker& checker) {
+PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ob::StateValidityChecker& checker) {
   PathMeasures m;
   m.length = path.length();
   ompl::geometric::PathGeometric dense(path);
@@ -37,24 +38,16 @@ PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const Rigid
   return m;
 }
 
-void writePathFile(const std::string& file, const ompl::geometric::PathGeometric& path, RigidBodySpace space) {
+namespace {
+
+/// Writes \p file through a temporary name renamed on success; \p body writes the lines.
+void writeAtomically(const std::string& file, const std::function<void(std::ostream&)>& body) {
   const std::string temporary = file + ".partial";
   {
     std::ofstream out(temporary);
     if (!out) throw InputError(file + ": cannot write the path file");
     out << std::setprecision(17);
-    for (std::size_t i = 0; i < path.getStateCount(); ++i) {
-      const ob::State* s = path.getState(i);
-      if (space == RigidBodySpace::se2) {
-        const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
-        out << se2->getX() << ' ' << se2->getY() << ' ' << se2->getYaw() << '\n';
-      } else {
-        const auto* se3 = s->as<ob::SE3StateSpace::StateType>();
-        const auto& q = se3->rotation();
-        out << se3->getX() << ' ' << se3->getY() << ' ' << se3->getZ() << ' ' << q.x << ' ' << q.y << ' ' << q.z
-            << ' ' << q.w << '\n';
-      }
-    }
+    body(out);
     out.flush();
     if (!out) {
       out.close();
@@ -68,6 +61,40 @@ void writePathFile(const std::string& file, const ompl::geometric::PathGeometric
     std::remove(temporary.c_str());
     throw InputError(file + ": cannot rename the finished path file into place: " + ec.message());
   }
+}
+
+}  // namespace
+
+void writePathFile(const std::string& file, const ompl::geometric::PathGeometric& path, RigidBodySpace space) {
+  writeAtomically(file, [&](std::ostream& out) {
+    for (std::size_t i = 0; i < path.getStateCount(); ++i) {
+      const ob::State* s = path.getState(i);
+      if (space == RigidBodySpace::se2) {
+        const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
+        out << se2->getX() << ' ' << se2->getY() << ' ' << se2->getYaw() << '\n';
+      } else {
+        const auto* se3 = s->as<ob::SE3StateSpace::StateType>();
+        const auto& q = se3->rotation();
+        out << se3->getX() << ' ' << se3->getY() << ' ' << se3->getZ() << ' ' << q.x << ' ' << q.y << ' ' << q.z
+            << ' ' << q.w << '\n';
+      }
+    }
+  });
+}
+
+void writeArmPathFile(const std::string& file, const ompl::geometric::PathGeometric& path,
+                      const ArmStateSpace& space, const std::vector<std::string>& jointNames) {
+  writeAtomically(file, [&](std::ostream& out) {
+    out << "# joints:";
+    for (const std::string& name : jointNames) out << ' ' << name;
+    out << '\n';
+    std::vector<double> q(space.dof());
+    for (std::size_t i = 0; i < path.getStateCount(); ++i) {
+      space.toJoints(path.getState(i), q.data());
+      for (std::size_t j = 0; j < q.size(); ++j) out << (j == 0 ? "" : " ") << q[j];
+      out << '\n';
+    }
+  });
 }
 
 }  // namespace adsd::planner

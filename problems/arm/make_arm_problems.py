@@ -44,6 +44,9 @@ ROBOTS = {
     },
     "wam": {
         "urdf": "${ADSD_ROBOTS}/wam/wam.urdf",
+        # Link pairs in contact by design (problems/arm/wam.srdf), as MoveIt's setup assistant
+        # would disable them.
+        "srdf": "../wam.srdf",
         "reach": 1.0,
         "group": "arm",
         "joints": ["/j1", "/j2", "/j3", "/j4", "/j5", "/j6", "/j7"],
@@ -327,14 +330,16 @@ def request_yaml(name, robot, start, goal):
 
 
 def problem_cfg(name, robot, description):
-    return "\n".join([
+    return "\n".join(
+        [
         "# %s: %s (problems/arm/README.md)." % (name, description),
         "# The robot comes from Debian's dart-doc: problems/data/fetch_robots.sh fills ${ADSD_ROBOTS}",
         "# (default ~/.cache/adsd/robots).",
         "[problem]",
         "name = %s" % name,
-        "robot = %s" % ROBOTS[robot]["urdf"],
-        "scene = scene.yaml",
+        "robot = %s" % ROBOTS[robot]["urdf"]]
+        + (["srdf = %s" % ROBOTS[robot]["srdf"]] if "srdf" in ROBOTS[robot] else [])
+        + ["scene = scene.yaml",
         "request = request.yaml",
         "package_path = ${ADSD_ROBOTS}",
         ""])

@@ -4,9 +4,11 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include <ompl/geometric/PathGeometric.h>
 
+#include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/rigid_body_validity_checker.h"
 
 namespace adsd::planner {
@@ -22,11 +24,18 @@ struct PathMeasures {
 /// \brief Measures \p path: its length, and the checker's clearance at its states after
 /// interpolating it to the space's validity-checking resolution (a copy is interpolated; the path
 /// is unchanged). The clearance queries count on the checker like any other.
-PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const RigidBodyValidityChecker& checker);
+/// Any checker with a clearance: RigidBodyValidityChecker, ArmValidityCheckerBase.
+PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ompl::base::StateValidityChecker& checker);
 
 /// \brief Writes one state per line, its real values separated by spaces (SE(2): x y yaw;
 /// SE(3): x y z qx qy qz qw). Written to a temporary file renamed on success, so a failure
 /// leaves nothing half-written; throws adsd::InputError naming the file when it cannot be written.
 void writePathFile(const std::string& file, const ompl::geometric::PathGeometric& path, RigidBodySpace space);
+
+/// \brief Writes an arm's path: a header comment line "# joints: NAME ..." (\p jointNames, the
+/// model's joint-vector order), then one state per line, its joint values (radians or metres)
+/// separated by spaces. Written as writePathFile writes.
+void writeArmPathFile(const std::string& file, const ompl::geometric::PathGeometric& path,
+                      const ArmStateSpace& space, const std::vector<std::string>& jointNames);
 
 }  // namespace adsd::planner

@@ -1,0 +1,199 @@
+#include "adsd/planner/arm_planning_problem.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+
+#include "adsd/error.h"
+#include "adsd/planner/arm_state_space.h"
+#include "adsd/planner/arm_validity_checker.h"
+#include "adsd/planner/features.h"
+#include "adsd/planner/motion_plan_request_yaml.h"
+#include "adsd/planner/planning_scene_yaml.h"
+#if ADSD_PLANNER_HAS_FCL
+#include "adsd/planner/fcl_arm_validity_checker.h"
+#endif
+
+namespace adsd::planner {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+bool isArmProblemFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::string line, section;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#' || line[first] == ';') continue;
+    const std::string s = line.substr(first);
+    if (s[0] == '[') {
+      const auto close = s.find(']');
+      section = s.substr(1, close == std::string::npos ? std::string::npos : close - 1);
+      continue;
+    }
+    const auto eq = s.find('=');
+    if (section != "problem" || eq == std::string::npos) continue;
+    std::string key = s.substr(0, eq);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    if (key == "request") return true;
+  }
+  return false;
+}
+
+namespace {
+
+/// "FILE:LINE" of \p line in \p file (just FILE when the line is unknown).
+std::string at(const std::string& file, int line) {
+  return line > 0 ? file + ":" + std::to_string(line) : file;
+}
+
+/// The smallest line of the map's values (the first joint as written), 0 when empty.
+template <class Map, class LineOf>
+int firstLine(const Map& map, LineOf lineOf) {
+  int best = 0;
+  for (const auto& entry : map) {
+    const int line = lineOf(entry.second);
+    if (line > 0 && (best == 0 || line < best)) best = line;
+  }
+  return best;
+}
+
+/// Throws when a non-continuous joint of \p q lies outside its limits.
+void checkLimits(const ArmModel& model, const std::vector<double>& q, const std::string& where, const char* which) {
+  for (std::size_t i = 0; i < model.dof(); ++i) {
+    const ArmJoint& joint = model.joints[model.activeJoints[i]];
+    if (joint.type == ArmJointType::continuous) continue;  // wraps: every angle is a position
+    if (q[i] < joint.lower || q[i] > joint.upper) {
+      std::ostringstream why;
+      why << where << ": " << which << " is outside the joint limits (joint " << joint.name << " = " << q[i]
+          << ", limits [" << joint.lower << ", " << joint.upper << "])";
+      throw InputError(why.str());
+    }
+  }
+}
+
+/// A file the cfg names must exist: otherwise the error names the cfg's line (the reader's own
+/// message would name only the missing file).
+void requireFile(const std::string& path, const SourceLocation& where, const char* what) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(where.describe() + ": " + what + " '" + path + "' does not exist");
+  }
+}
+
+}  // namespace
+
+ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, const CheckingOptions& options)
+    : name_(file.name), options_(options), objective_(options.objective.value_or(ObjectiveKind::length)) {
+  warnings_ = file.warnings;
+  requireFile(file.robotPath, file.robotLocation, "URDF file");
+  if (file.srdfPath) requireFile(*file.srdfPath, file.srdfLocation, "SRDF file");
+  requireFile(file.scenePath, file.sceneLocation, "scene file");
+  requireFile(file.requestPath, file.requestLocation, "request file");
+  auto model = std::make_shared<ArmModel>(readUrdf(file.robotPath, file.packagePath));
+  model_ = model;
+  const PlanningSceneYaml sceneFile = readPlanningSceneYaml(file.scenePath);
+  const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);
+  allowedPlanningTime_ = request.allowedPlanningTime;
+  scene_ = std::make_shared<const ArmScene>(makeArmScene(model_, sceneFile.objects, file.srdfPath.value_or("")));
+
+  // The joint vectors, in the model's order.
+  const std::size_t dof = model_->dof();
+  start_.assign(dof, 0.0);
+  goal_.assign(dof, 0.0);
+  for (std::size_t i = 0; i < dof; ++i) {
+    const std::string& joint = model_->joints[model_->activeJoints[i]].name;
+    if (const auto s = request.start.find(joint); s != request.start.end()) {
+      start_[i] = s->second;
+    } else if (const auto d = sceneFile.defaultJointValues.find(joint); d != sceneFile.defaultJointValues.end()) {
+      start_[i] = d->second;
+    } else {
+      throw InputError(file.requestPath + ": the start state has no position for joint '" + joint + "' of robot '" +
+                       model_->name + "' (neither the request's start_state nor the scene's robot_state gives one)");
+    }
+  }
+  for (const auto& [joint, value] : request.start) {
+    bool known = false;
+    for (std::size_t i = 0; i < dof && !known; ++i) known = model_->joints[model_->activeJoints[i]].name == joint;
+    if (!known) {
+      const auto line = request.startLines.find(joint);
+      warnings_.push_back(at(file.requestPath, line != request.startLines.end() ? line->second : 0) +
+                          ": start joint '" + joint + "' is not a movable joint of robot '" + model_->name +
+                          "', ignored");
+    }
+  }
+  goal_ = start_;
+  double smallestTolerance = std::numeric_limits<double>::infinity();
+  for (const auto& [joint, constraint] : request.goal) {
+    std::size_t index = dof;
+    for (std::size_t i = 0; i < dof; ++i) {
+      if (model_->joints[model_->activeJoints[i]].name == joint) index = i;
+    }
+    if (index == dof) {
+      throw InputError(at(file.requestPath, constraint.line) + ": goal joint '" + joint +
+                       "' is not a movable joint of robot '" + model_->name + "'");
+    }
+    goal_[index] = constraint.position;
+    smallestTolerance = std::min({smallestTolerance, constraint.toleranceAbove, constraint.toleranceBelow});
+  }
+  goalThreshold_ = std::max(smallestTolerance, kArmGoalThresholdFloor);
+
+  auto space = std::make_shared<ArmStateSpace>(*model_);
+  setup_ = std::make_shared<og::SimpleSetup>(space);
+  const ob::SpaceInformationPtr& si = setup_->getSpaceInformation();
+  if (options_.checker == CheckerKind::fcl) {
+#if ADSD_PLANNER_HAS_FCL
+    checker_ = std::make_shared<FclArmValidityChecker>(si, *scene_, options_.safetyMargin);
+#else
+    throw InputError("checker 'fcl': this build of adsd has no FCL (libfcl-dev was not found when it was configured)");
+#endif
+  } else {
+    checker_ = std::make_shared<ArmValidityChecker>(si, *scene_, options_.safetyMargin, options_.clearance);
+  }
+  setup_->setStateValidityChecker(checker_);
+  if (options_.motion == MotionKind::certified) {
+    certified_ = std::make_shared<ArmMotionValidator>(si, checker_);
+    si->setMotionValidator(certified_);
+  }
+  if (objective_ == ObjectiveKind::maxMinClearance) {
+    setup_->setOptimizationObjective(std::make_shared<ob::MaximizeMinClearanceObjective>(si));
+  } else {
+    setup_->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
+  }
+
+  // Start and goal: within the limits and valid, or an error naming the request's first joint line.
+  const std::string startAt =
+      at(file.requestPath, firstLine(request.startLines, [](int line) { return line; }));
+  const std::string goalAt =
+      at(file.requestPath, firstLine(request.goal, [](const JointGoal& g) { return g.line; }));
+  ob::ScopedState<> startState(space), goalState(space);
+  space->fromJoints(start_.data(), startState.get());
+  space->fromJoints(goal_.data(), goalState.get());
+  for (const bool isStart : {true, false}) {
+    const std::string& where = isStart ? startAt : goalAt;
+    const char* which = isStart ? "the start state" : "the goal state";
+    checkLimits(*model_, isStart ? start_ : goal_, where, which);
+    const ob::State* s = isStart ? startState.get() : goalState.get();
+    if (!checker_->isValid(s)) {
+      std::ostringstream why;
+      why << where << ": " << which << " is in collision (clearance " << checker_->clearance(s) << ", safety margin "
+          << options_.safetyMargin << ")";
+      throw InputError(why.str());
+    }
+  }
+  setup_->setStartState(startState);
+  auto goal = std::make_shared<ob::GoalState>(si);
+  goal->setState(goalState);
+  goal->setThreshold(goalThreshold_);
+  setup_->setGoal(goal);
+  checker_->resetCounts();
+}
+
+}  // namespace adsd::planner

@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""`adsd benchmark` on arm problems (issue 17), run as a user runs it, with tiny runs.
+
+usage: arm_benchmark_test.py --adsd PROGRAM --problems problems/arm --work DIR
+
+Checks: one arm problem with --runs 2 --time 1 writes a log and a database whose runs hold every
+checker x motion validator combination with our run properties (checker, motion validator, validity
+checks, ...); a directory of arm problems writes one log per problem. Exits 77 (skipped) naming
+problems/data/fetch_robots.sh when the robots are not cached.
+"""
+import argparse
+import os
+import shutil
+import sqlite3
+import subprocess
+import sys
+
+failures = []
+COMBINATIONS = {("adsd", "discrete"), ("adsd", "certified"), ("fcl", "discrete"), ("fcl", "certified")}
+RUNS = 2
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+        print("FAIL: " + what, flush=True)
+    return condition
+
+
+def run(adsd, args):
+    print("$ " + " ".join(["adsd", "benchmark"] + args), flush=True)
+    p = subprocess.run([adsd, "benchmark"] + args, capture_output=True, text=True, timeout=600)
+    print("  -> exit %d" % p.returncode, flush=True)
+    return p
+
+
+def robots_directory():
+    return os.environ.get("ADSD_ROBOTS") or os.path.join(os.path.expanduser("~"), ".cache", "adsd", "robots")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--adsd", required=True)
+    parser.add_argument("--problems", required=True)
+    parser.add_argument("--work", required=True)
+    args = parser.parse_args()
+    robot = os.path.join(robots_directory(), "KR5", "KR5 sixx R650.urdf")
+    if not os.path.exists(robot):
+        print("skipped: the robots are not cached (%s): run problems/data/fetch_robots.sh" % robot)
+        return 77
+    shutil.rmtree(args.work, ignore_errors=True)
+    os.makedirs(args.work)
+
+    # One problem, every combination.
+    out = os.path.join(args.work, "one")
+    cfg = os.path.join(args.problems, "kr5_table_pick", "problem.cfg")
+    p = run(args.adsd, [cfg, "--runs", str(RUNS), "--time", "1", "--out", out, "--no-plots"])
+    if check(p.returncode == 0, "one problem: exit %d\n%s%s" % (p.returncode, p.stdout, p.stderr)):
+        check("(arm " in p.stdout, "the header names the arm: " + p.stdout)
+        log = os.path.join(out, "kr5_table_pick.log")
+        db = os.path.join(out, "kr5_table_pick.db")
+        check(os.path.isfile(log), "no log " + log)
+        if check(os.path.isfile(db), "no database " + db):
+            con = sqlite3.connect(db)
+            columns = {row[1] for row in con.execute("PRAGMA table_info(runs)")}
+            for c in ("checker", "motion_validator", "validity_checks", "clearance_queries", "motion_checks",
+                      "mean_validity_check_time", "planner_time"):
+                check(c in columns, "runs has no column " + c)
+            rows = con.execute("SELECT checker, motion_validator, validity_checks, motion_checks, "
+                               "certified_clearance_steps FROM runs").fetchall()
+            check(len(rows) == RUNS * len(COMBINATIONS), "%d runs, expected %d" % (len(rows), RUNS * len(COMBINATIONS)))
+            check({(r[0], r[1]) for r in rows} == COMBINATIONS, "combinations: %s" % sorted({(r[0], r[1]) for r in rows}))
+            for r in rows:
+                check(r[2] is not None and r[2] > 0, "a run without validity checks: %r" % (r,))
+                check(r[3] is not None and r[3] > 0, "a run without motion checks: %r" % (r,))
+                check((r[4] is not None) == (r[1] == "certified"), "certified steps only for certified: %r" % (r,))
+            experiments = con.execute("SELECT name FROM experiments").fetchall()
+            check(experiments == [("kr5_table_pick",)], "experiments: %r" % experiments)
+
+    # A directory of MotionBenchMaker-style folders: one log per problem.
+    folders = os.path.join(args.work, "folders")
+    shipped = os.path.join(os.path.abspath(args.problems), "kr5_table_pick")
+    for name in ("a_first", "b_second"):
+        os.makedirs(os.path.join(folders, name))
+        with open(os.path.join(folders, name, "problem.cfg"), "w") as f:
+            f.write("[problem]\nname = %s\nrobot = ${ADSD_ROBOTS}/KR5/KR5 sixx R650.urdf\nscene = %s/scene.yaml\n"
+                    "request = %s/request.yaml\npackage_path = ${ADSD_ROBOTS}\n" % (name, shipped, shipped))
+    out = os.path.join(args.work, "many")
+    p = run(args.adsd, [folders, "--runs", "1", "--time", "0.5", "--checker", "adsd", "--motion", "certified",
+                        "--out", out, "--log-only"])
+    if check(p.returncode == 0, "a directory: exit %d\n%s%s" % (p.returncode, p.stdout, p.stderr)):
+        for name in ("a_first", "b_second"):
+            check(os.path.isfile(os.path.join(out, name + ".log")), "no log for " + name)
+
+    # Bad input: an unknown planner is a usage error before anything is written.
+    out = os.path.join(args.work, "bad")
+    p = run(args.adsd, [cfg, "--planner", "rrtconnect,nosuch", "--out", out])
+    check(p.returncode == 2 and len(p.stderr.splitlines()) == 1 and "nosuch" in p.stderr,
+          "unknown planner: exit %d, %r" % (p.returncode, p.stderr))
+    check(not os.path.exists(out), "unknown planner: wrote " + out)
+
+    if failures:
+        print("%d failure(s)" % len(failures))
+        return 1
+    print("ok")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

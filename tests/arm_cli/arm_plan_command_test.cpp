@@ -1,0 +1,291 @@
+// `adsd plan ARM.cfg` run as a user runs it (the built program, ADSD_PROGRAM), on the shipped arm
+// problems (problems/arm): it solves them with RRTConnect and either checker, the path file's
+// states lie within the joint limits, are valid by our checker and by FCL's, and the straight
+// joint-space motions between them are collision-free by an independent dense check (FCL's
+// checker at a tenth of the validity-checking resolution); bad arm problems stop with exit status 2
+// and one line naming the file and line, and write nothing.
+//
+// Needs the robots problems/data/fetch_robots.sh puts in ~/.cache/adsd/robots (or ${ADSD_ROBOTS});
+// every test is skipped with a message naming the script when they are missing.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "adsd/error.h"
+#include "adsd/planner/arm_planning_problem.h"
+#include "adsd/planner/arm_state_space.h"
+#include "adsd/planner/features.h"
+
+namespace {
+
+using namespace adsd::planner;
+namespace fs = std::filesystem;
+
+const std::string kArmProblems = ADSD_ARM_PROBLEMS_DIR;
+
+std::string cfgOf(const std::string& name) { return kArmProblems + "/" + name + "/problem.cfg"; }
+
+/// The robots are a download (problems/data/fetch_robots.sh): skip without them.
+#define SKIP_WITHOUT_ROBOTS(cfg)                                                                          \
+  do {                                                                                                  \
+    if (!fs::exists(readMotionBenchMakerProblem(cfg).robotPath)) {                                       \
+      GTEST_SKIP() << "the robots are not cached: run problems/data/fetch_robots.sh (robot of " << (cfg) \
+                   << ": " << readMotionBenchMakerProblem(cfg).robotPath << ")";                        \
+    }                                                                                                   \
+  } while (0)
+
+std::string readAll(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A fresh directory per test.
+fs::path workDirectory() {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  fs::path dir = fs::path(testing::TempDir()) / (std::string("adsd_arm_cli_") + info->test_suite_name() + "_" + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct PlanRun {
+  int status = -1;
+  std::string out, err;
+};
+
+/// Runs `adsd plan ARGS` with stdout and stderr into files of \p dir.
+PlanRun plan(const std::vector<std::string>& args, const fs::path& dir) {
+  std::string command = std::string("'") + ADSD_PROGRAM + "' plan";
+  for (const std::string& a : args) command += " '" + a + "'";
+  command += " > '" + (dir / "stdout").string() + "' 2> '" + (dir / "stderr").string() + "'";
+  const int raw = std::system(command.c_str());
+  PlanRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = readAll(dir / "stdout");
+  r.err = readAll(dir / "stderr");
+  return r;
+}
+
+/// The path file: the header's joint names and the states.
+struct PathFile {
+  std::vector<std::string> joints;
+  std::vector<std::vector<double>> states;
+};
+
+PathFile readPath(const fs::path& p) {
+  PathFile f;
+  std::ifstream in(p);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    if (line.rfind("# joints:", 0) == 0) {
+      std::string word;
+      words >> word >> word;
+      while (words >> word) f.joints.push_back(word);
+      continue;
+    }
+    std::vector<double> q;
+    double v;
+    while (words >> v) q.push_back(v);
+    f.states.push_back(q);
+  }
+  return f;
+}
+
+/// Plans \p name with \p checker through the program and checks its path file.
+void planAndCheck(const std::string& name, const std::string& checker) {
+  const std::string cfg = cfgOf(name);
+  const fs::path dir = workDirectory();
+  const fs::path pathFile = dir / "path.txt";
+  const PlanRun r = plan({cfg, "--planner", "rrtconnect", "--time", "10", "--seed", "1", "--checker", checker, "--path",
+                      pathFile.string()},
+                     dir);
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("solved      yes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("clearance   min"), std::string::npos) << r.out;
+
+  CheckingOptions options;
+  const ArmPlanningProblem ours(readMotionBenchMakerProblem(cfg), options);
+  const ArmModel& model = ours.model();
+  const PathFile path = readPath(pathFile);
+  ASSERT_EQ(path.joints.size(), model.dof());
+  for (std::size_t i = 0; i < model.dof(); ++i) EXPECT_EQ(path.joints[i], model.joints[model.activeJoints[i]].name);
+  ASSERT_GE(path.states.size(), 2u);
+
+  const auto& si = ours.spaceInformation();
+  const auto& space = static_cast<const ArmStateSpace&>(*si->getStateSpace());
+  ompl::base::ScopedState<> state(si), from(si), to(si), between(si);
+  for (const auto& q : path.states) {
+    ASSERT_EQ(q.size(), model.dof());
+    for (std::size_t i = 0; i < model.dof(); ++i) {
+      const ArmJoint& joint = model.joints[model.activeJoints[i]];
+      if (joint.type == ArmJointType::continuous) continue;
+      EXPECT_GE(q[i], joint.lower - 1e-12) << joint.name;
+      EXPECT_LE(q[i], joint.upper + 1e-12) << joint.name;
+    }
+    space.fromJoints(q.data(), state.get());
+    EXPECT_TRUE(ours.checker()->isValid(state.get()));
+  }
+  // The endpoints: the start exactly, the goal within the threshold.
+  space.fromJoints(path.states.front().data(), from.get());
+  space.fromJoints(ours.startJoints().data(), to.get());
+  EXPECT_LT(si->distance(from.get(), to.get()), 1e-9);
+  space.fromJoints(path.states.back().data(), from.get());
+  space.fromJoints(ours.goalJoints().data(), to.get());
+  EXPECT_LE(si->distance(from.get(), to.get()), ours.goalThreshold() + 1e-9);
+
+#if ADSD_PLANNER_HAS_FCL
+  // The independent dense check: FCL's narrow phase at states 0.002 apart in joint space (radians
+  // summed over the joints: a point 1 m from every axis moves at most 2 mm between checks), a
+  // small fraction of the validity-checking resolution the discrete motion validator used (tenths).
+  options.checker = CheckerKind::fcl;
+  const ArmPlanningProblem theirs(readMotionBenchMakerProblem(cfg), options);
+  const double step = 0.002;
+  std::size_t checked = 0;
+  for (std::size_t k = 0; k + 1 < path.states.size(); ++k) {
+    space.fromJoints(path.states[k].data(), from.get());
+    space.fromJoints(path.states[k + 1].data(), to.get());
+    const int steps = std::max(1, static_cast<int>(std::ceil(si->distance(from.get(), to.get()) / step)));
+    for (int j = 0; j <= steps; ++j) {
+      si->getStateSpace()->interpolate(from.get(), to.get(), static_cast<double>(j) / steps, between.get());
+      ASSERT_TRUE(theirs.checker()->isValid(between.get())) << "segment " << k << ", step " << j << " of " << steps;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, path.states.size());
+#endif
+}
+
+TEST(ArmPlanCommand, SolvesKr5TablePickWithOurChecker) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  planAndCheck("kr5_table_pick", "adsd");
+}
+
+TEST(ArmPlanCommand, SolvesWamBoxWithOurChecker) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("wam_box"));
+  planAndCheck("wam_box", "adsd");
+}
+
+#if ADSD_PLANNER_HAS_FCL
+TEST(ArmPlanCommand, SolvesKr5TablePickWithFcl) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  planAndCheck("kr5_table_pick", "fcl");
+}
+
+TEST(ArmPlanCommand, SolvesWamBoxWithFcl) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("wam_box"));
+  planAndCheck("wam_box", "fcl");
+}
+#endif
+
+// ---- bad input: exit 2, one line naming the file and line, nothing written -----------------------
+
+/// A copy of kr5_table_pick in \p dir whose request is \p requestText (the shipped request when
+/// empty) or whose request path is \p requestPath.
+fs::path writeProblem(const fs::path& dir, const std::string& requestText, const std::string& requestPath = "") {
+  const std::string shipped = kArmProblems + "/kr5_table_pick";
+  const fs::path request = requestPath.empty() ? dir / "request.yaml" : fs::path(requestPath);
+  if (requestPath.empty()) std::ofstream(request) << requestText;
+  const fs::path cfg = dir / "problem.cfg";
+  std::ofstream(cfg) << "[problem]\n"
+                        "name = bad\n"
+                        "robot = ${ADSD_ROBOTS}/KR5/KR5 sixx R650.urdf\n"
+                        "scene = "
+                     << shipped << "/scene.yaml\n"
+                     << "request = " << request.string() << "\n"
+                     << "package_path = ${ADSD_ROBOTS}\n";
+  return cfg;
+}
+
+std::string shippedRequest() { return readAll(kArmProblems + "/kr5_table_pick/request.yaml"); }
+
+/// \p text with the first \p from replaced by \p to.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The line of \p text where \p needle first appears (1-based).
+int lineOf(const std::string& text, const std::string& needle) {
+  const auto at = text.find(needle);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
+void expectRefused(const fs::path& cfg, const fs::path& dir, const std::string& where, const std::string& what) {
+  const fs::path out = dir / "out.path";
+  const PlanRun r = plan({cfg.string(), "--time", "1", "--path", out.string()}, dir);
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("adsd plan: error: " + where + ": "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(ArmPlanCommand, MissingRequestFileNamesTheCfgLine) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const fs::path cfg = writeProblem(dir, "", (dir / "no_such_request.yaml").string());
+  expectRefused(cfg, dir, cfg.string() + ":5: key 'problem.request'", "request file");
+}
+
+TEST(ArmPlanCommand, StartInCollisionNamesTheRequestLine) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  // The upper arm pitched down into the table.
+  const std::string text =
+      replaced(shippedRequest(), "position: [0, -0.6, -1.2, 0, 0.5, 0]", "position: [0, 1.9, 0, 0, 0, 0]");
+  const fs::path cfg = writeProblem(dir, text);
+  expectRefused(cfg, dir, (dir / "request.yaml").string() + ":" + std::to_string(lineOf(text, "position: [0, 1.9")),
+                "the start state is in collision (clearance ");
+}
+
+TEST(ArmPlanCommand, StartOutsideTheLimitsNamesTheRequestLine) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const std::string text =
+      replaced(shippedRequest(), "position: [0, -0.6, -1.2, 0, 0.5, 0]", "position: [100, -0.6, -1.2, 0, 0.5, 0]");
+  const fs::path cfg = writeProblem(dir, text);
+  expectRefused(cfg, dir, (dir / "request.yaml").string() + ":" + std::to_string(lineOf(text, "position: [100")),
+                "the start state is outside the joint limits (joint shoulder_yaw = 100");
+}
+
+TEST(ArmPlanCommand, UnknownGoalJointNamesItsLine) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const std::string text = replaced(shippedRequest(), "joint_name: 'elbow_roll'", "joint_name: 'no_such_joint'");
+  const fs::path cfg = writeProblem(dir, text);
+  // The constraint's line is that of its `position`.
+  const int line = lineOf(text, "no_such_joint") + 1;
+  expectRefused(cfg, dir, (dir / "request.yaml").string() + ":" + std::to_string(line),
+                "goal joint 'no_such_joint' is not a movable joint");
+}
+
+TEST(ArmPlanCommand, HtmlIsAUsageErrorForArms) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const fs::path html = dir / "out.html";
+  const PlanRun r = plan({cfgOf("kr5_table_pick"), "--html", html.string()}, dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("does not show arms yet"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(html));
+}
+
+TEST(ArmPlanCommand, ArmCfgIsRecognized) {
+  EXPECT_TRUE(isArmProblemFile(cfgOf("kr5_table_pick")));
+  EXPECT_FALSE(isArmProblemFile(kArmProblems + "/no_such_problem.cfg"));
+  EXPECT_FALSE(isArmProblemFile(kArmProblems + "/README.md"));
+}
+
+}  // namespace
