@@ -12,6 +12,8 @@ packages=(
   # OMPL's CMake config names these libraries without depending on their -dev packages.
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev libboost-program-options-dev
   libgtest-dev libbenchmark-dev libfcl-dev
+  # Arms from URDF files (issue 17): urdfdom, and TinyXML for SRDF files (urdfdom's own XML library).
+  liburdfdom-dev libtinyxml-dev
   # Sanitizer and fuzzing builds (issue 7), plots, sharded benchmarks, fetching real meshes, and
   # perf for the benchmarks' profile (bench/profile_modes.py).
   clang libclang-rt-14-dev python3-matplotlib parallel sqlite3 linux-perf

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Fetches the real arms of issue 17 into a cache directory, without installing anything
 # system-wide: the KUKA KR5 sixx R650 and the Barrett WAM, URDF files with their meshes, from
-# Debian's dart-doc package (DART's examples; BSD-2-clause, docs/data-licences... see
-# problems/README.md). Never committed.
+# Debian's dart-doc package (DART's examples; BSD-2-clause, `Files: *` of the package's copyright
+# file, recorded in README.md's "Licences of data" and docs/arms.md). Never committed.
 #
 #   problems/data/fetch_robots.sh [--dir DIR] [--force]
 #
