@@ -14,6 +14,8 @@ packages=(
   libgtest-dev libbenchmark-dev libfcl-dev
   # MotionBenchMaker's scene and request YAMLs (issue 17).
   libyaml-cpp-dev
+  # Arms from URDF files (issue 17): urdfdom, and TinyXML for SRDF files (urdfdom's own XML library).
+  liburdfdom-dev libtinyxml-dev
   # Sanitizer and fuzzing builds (issue 7), plots, sharded benchmarks, fetching real meshes, and
   # perf for the benchmarks' profile (bench/profile_modes.py).
   clang libclang-rt-14-dev python3-matplotlib parallel sqlite3 linux-perf

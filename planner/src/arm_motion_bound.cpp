@@ -6,7 +6,7 @@
 namespace adsd::planner {
 
 ArmMotionBound::ArmMotionBound(const ArmModel& model)
-    : links_(model.links.size()), dof_(model.dof()), k_(links_ * dof_, 0.0) {
+    : links_(model.links.size()), dof_(model.dof()), k_(links_ * dof_, 0.0), beyond_(links_ * dof_, 0) {
   // r_L: the farthest vertex of each link from its frame origin.
   std::vector<double> radius(links_, 0.0);
   for (std::size_t l = 0; l < links_; ++l) {
@@ -46,6 +46,7 @@ ArmMotionBound::ArmMotionBound(const ArmModel& model)
         }
       }
       k_[l * dof_ + i] = k;
+      beyond_[l * dof_ + i] = 1;
     }
   }
 }
@@ -56,6 +57,14 @@ void ArmMotionBound::linkDisplacements(const double* dq, double* out) const {
     for (std::size_t i = 0; i < dof_; ++i) b += k_[l * dof_ + i] * std::abs(dq[i]);
     out[l] = b;
   }
+}
+
+double ArmMotionBound::pairDisplacement(std::size_t a, std::size_t b, const double* dq) const {
+  double d = 0.0;
+  for (std::size_t i = 0; i < dof_; ++i) {
+    if (beyond_[a * dof_ + i] != beyond_[b * dof_ + i]) d += (k_[a * dof_ + i] + k_[b * dof_ + i]) * std::abs(dq[i]);
+  }
+  return d;
 }
 
 }  // namespace adsd::planner

@@ -32,41 +32,53 @@ double ArmMotionValidator::motionBound(const ob::State* s1, const ob::State* s2)
   bound_.linkDisplacements(dq.data(), b.data());
   double m = 0.0;
   for (std::size_t l : obstacleLinks_) m = std::max(m, b[l]);
-  for (const auto& [l1, l2] : selfPairs_) m = std::max(m, b[l1] + b[l2]);
+  for (const auto& [l1, l2] : selfPairs_) m = std::max(m, bound_.pairDisplacement(l1, l2, dq.data()));
   return m;
 }
 
 bool ArmMotionValidator::certify(const ob::State* s1, const ob::State* s2, double& lastValidT) const {
   lastValidT = 0.0;
   if (!si_->satisfiesBounds(s2)) return false;
-  const double total = motionBound(s1, s2);
+  // Per-link weights: B_L of the whole motion, so that a segment of parameter length len moves
+  // link L by at most w_L len, and changes pair P's distance by at most w_P len.
+  const std::size_t dof = checker_->armSpace().dof();
+  std::vector<double> dq(dof), weights(checker_->model().links.size()), pairWeights(selfPairs_.size());
+  checker_->armSpace().jointSteps(s1, s2, dq.data());
+  bound_.linkDisplacements(dq.data(), weights.data());
+  for (std::size_t k = 0; k < selfPairs_.size(); ++k) {
+    pairWeights[k] = bound_.pairDisplacement(selfPairs_[k].first, selfPairs_[k].second, dq.data());
+  }
   // Distances are trusted up to kDistanceTrustFraction of the scene's scale; each clearance gives
   // that away, and the margin, so that rounding never certifies a touching motion.
   const double giveAway = checker_->safetyMargin() + kDistanceTrustFraction * checker_->scale();
-  // A state's clearance is needed only up to the bound of the segments it ends: above
-  // M x (their length), one end alone proves them. Asking for no more lets the distance queries
-  // stop early (clearanceUpTo's cap), which matters most deep in the bisection.
-  const double allowance = kDistanceTrustFraction * checker_->scale();
-  ob::State* state = si_->allocState();
-  const auto effective = [&](const ob::State* s, double segmentLength) {
+  // tau(s) = min over pairs of (d_P(s) - giveAway) / w_P, in units of the motion's parameter: a
+  // segment [a, b] is free when b - a < tau(a) + tau(b) (for every pair P, w_P (b - a) <
+  // c_P(a) + c_P(b): the class comment's condition, pair by pair). A state's tau is needed only
+  // up to the length of the segments it ends (one end alone then proves them): the cap.
+  const auto tau = [&](const ob::State* s, double segmentLength) {
     clearanceQueries_.fetch_add(1, std::memory_order_relaxed);
-    return checker_->clearanceUpTo(s, giveAway + total * segmentLength + allowance) - giveAway;
+    return checker_->weightedClearanceUpTo(s, weights.data(), pairWeights.data(), giveAway, segmentLength);
   };
+  // Pairs with w_P = 0 keep their distance along the motion: the start's validity covers them
+  // (OMPL assumes it; checked, as the start may come from elsewhere).
+  clearanceQueries_.fetch_add(1, std::memory_order_relaxed);
+  if (!checker_->isValid(s1)) return false;
   struct Segment {
     double ta, ca, tb, cb;
   };
   std::vector<Segment> stack;
-  const double c0 = effective(s1, 1.0);
-  const double c1 = effective(s2, 1.0);
+  const double c0 = tau(s1, 1.0);
+  const double c1 = tau(s2, 1.0);
   bool ok = c0 > 0.0;
   if (ok) stack.push_back({0.0, c0, 1.0, c1});
+  ob::State* state = si_->allocState();
   while (ok && !stack.empty()) {
     const Segment s = stack.back();
     stack.pop_back();
     const double length = s.tb - s.ta;
-    // The end's clearance counts only when the end is valid (c > 0); an invalid end is never
-    // proven, and its segments shrink to the floor below.
-    if (s.cb > 0.0 && total * length < s.ca + s.cb) {
+    // The end counts only when it is valid (tau > 0); an invalid end is never proven, and its
+    // segments shrink to the floor below.
+    if (s.cb > 0.0 && length < s.ca + s.cb) {
       lastValidT = s.tb;  // left first: everything up to tb is proven
       continue;
     }
@@ -76,12 +88,12 @@ bool ArmMotionValidator::certify(const ob::State* s1, const ob::State* s2, doubl
     }
     const double tm = 0.5 * (s.ta + s.tb);
     si_->getStateSpace()->interpolate(s1, s2, tm, state);
-    const double cm = effective(state, 0.5 * length);
+    const double cm = tau(state, 0.5 * length);
     if (!(cm > 0.0)) {
       ok = false;
       break;
     }
-    stack.push_back({tm, cm, s.tb, s.cb});  // right half after the left one
+    stack.push_back({tm, cm, s.tb, s.cb});  // the right half after the left one
     stack.push_back({s.ta, s.ca, tm, cm});
   }
   si_->freeState(state);

@@ -73,7 +73,12 @@ ArmValidityCheckerBase::ArmValidityCheckerBase(const ompl::base::SpaceInformatio
     ballRadii_.push_back(radius);
     linkBoxes_.push_back(mesh.bounds());
   }
-  for (const auto& [a, b] : scene_->selfPairs.enabledPairs()) selfPairs_.emplace_back(bodyOfLink[a], bodyOfLink[b]);
+  selfPairIndex_.assign(linkOfBody_.size() * linkOfBody_.size(), SIZE_MAX);
+  for (const auto& [a, b] : scene_->selfPairs.enabledPairs()) {
+    const std::size_t ba = bodyOfLink[a], bb = bodyOfLink[b];
+    selfPairIndex_[ba * linkOfBody_.size() + bb] = selfPairIndex_[bb * linkOfBody_.size() + ba] = selfPairs_.size();
+    selfPairs_.emplace_back(ba, bb);
+  }
   Eigen::AlignedBox3d box(Vec3::Constant(-reach), Vec3::Constant(reach));
   for (const Mesh& part : scene_->environment) {
     obstacleCentres_.push_back(part.bounds().center());
@@ -177,6 +182,47 @@ double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, 
     const PairDistance d = pairDistance(p.a, poseA, p.b, poseB, best);
     if (!d.reachedCap) best = std::min(best, d.lower);
     if (best <= 0.0) break;  // in contact: nothing is nearer
+  }
+  return best;
+}
+
+double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* state, const double* linkWeights,
+                                                     const double* selfPairWeights, double subtract,
+                                                     double cap) const {
+  ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
+  const std::vector<Pose>& linkPoses = posesFor(state);
+  thread_local std::vector<PairBound> pairs;
+  // Every pair: each has its own weight, so no one distance limit culls them here.
+  const double slack = broadPhase(linkPoses, std::numeric_limits<double>::infinity(), pairs);
+  const std::size_t n = linkOfBody_.size();
+  const auto weightOf = [&](const PairBound& p) {
+    return p.b < n ? selfPairWeights[selfPairIndex_[p.a * n + p.b]] : linkWeights[linkOfBody_[p.a]];
+  };
+  // The key of a pair: a lower bound of its weighted clearance (its distance bound less the
+  // roundoff allowance); weightless pairs leave, the rest are visited smallest key first.
+  std::size_t kept = 0;
+  for (const PairBound& p : pairs) {
+    const double w = weightOf(p);
+    if (w > 0.0) pairs[kept++] = {(p.lower - slack - subtract) / w, p.a, p.b};
+  }
+  pairs.resize(kept);
+  const auto fartherFirst = [](const PairBound& x, const PairBound& y) { return x.lower > y.lower; };
+  std::make_heap(pairs.begin(), pairs.end(), fartherFirst);
+  double best = cap;
+  while (!pairs.empty()) {
+    std::pop_heap(pairs.begin(), pairs.end(), fartherFirst);
+    const PairBound p = pairs.back();
+    pairs.pop_back();
+    if (p.lower >= best) break;  // this pair and all left are no nearer, weighted
+    const double w = weightOf(p);
+    const Pose& poseA = linkPoses[linkOfBody_[p.a]];
+    const Pose poseB = p.b < n ? linkPoses[linkOfBody_[p.b]] : Pose::Identity();
+    // The pair's distance matters only below best * w + subtract.
+    const double needed = best * w + subtract;
+    if (!(needed > 0.0)) break;  // only when cap <= 0: nothing is asked for
+    const PairDistance d = pairDistance(p.a, poseA, p.b, poseB, needed);
+    if (!d.reachedCap) best = std::min(best, (d.lower - subtract) / w);
+    if (best <= 0.0) break;  // within the margin: the caller rejects
   }
   return best;
 }

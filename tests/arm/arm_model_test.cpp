@@ -5,12 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iostream>
+#include <iterator>
 #include <random>
 
 #include "adsd/error.h"
 #include "adsd/planner/arm_collision_pairs.h"
 #include "adsd/planner/arm_kinematics.h"
 #include "adsd/planner/arm_model.h"
+#include "adsd/planner/arm_pair_sampling.h"
 #include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/primitive_meshes.h"
 #include "arm_test_data.h"
@@ -165,6 +169,37 @@ TEST(ArmCollisionPairs, SrdfDisablesItsPairsAndRoundTrips) {
   }
   EXPECT_THROW(disablePairsFromSrdf(m, dir.write("junk.srdf", "<robot"), pairs), InputError);
   EXPECT_THROW(disablePairsFromSrdf(m, dir.path("absent.srdf"), pairs), InputError);
+}
+
+// The small arm's two enabled pairs can never touch (the arm turns 0.1 above the base's top), so
+// the sampling pass disables both as "Never"; the SRDF it writes says so.
+TEST(ArmCollisionPairs, SamplingPassDisablesPairsNeverInContact) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  ArmCollisionPairs pairs(m);
+  const PairSamplingResult r = disablePairsBySampling(m, pairs, 200, 7);
+  EXPECT_EQ(r.states, 200u);
+  EXPECT_EQ(r.pairsTested, 2u);
+  EXPECT_EQ(r.neverInContact, 2u);
+  EXPECT_EQ(r.alwaysInContact, 0u);
+  EXPECT_TRUE(pairs.enabledPairs().empty());
+  test::ScratchDir dir;
+  writeSrdf(m, pairs, dir.path("sampled.srdf"));
+  std::ifstream in(dir.path("sampled.srdf"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(R"(link1="base" link2="arm" reason="Never")"), std::string::npos) << text;
+  EXPECT_THROW(disablePairsBySampling(m, pairs, 0), InputError);
+}
+
+TEST(ArmCollisionPairs, SamplingPassOnTheKr5KeepsPairsThatSometimesTouch) {
+  ADSD_REQUIRE_ROBOTS();
+  const ArmModel m = readUrdf(test::kr5Urdf());
+  ArmCollisionPairs pairs(m);
+  const std::size_t before = pairs.enabledPairs().size();
+  const PairSamplingResult r = disablePairsBySampling(m, pairs, 300, 3);
+  EXPECT_EQ(r.pairsTested, before);
+  EXPECT_EQ(pairs.enabledPairs().size(), before - r.alwaysInContact - r.neverInContact);
+  std::cout << "KR5 sampling pass, 300 states: " << before << " pairs tested, " << r.alwaysInContact << " always, "
+            << r.neverInContact << " never in contact, " << pairs.enabledPairs().size() << " left\n";
 }
 
 // Each failure mode of readUrdf: one InputError whose message names the file and what is wrong.

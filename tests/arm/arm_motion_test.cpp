@@ -53,6 +53,7 @@ TEST(ArmMotionBound, NoVertexMovesFartherThanTheBound) {
   std::uniform_real_distribution<double> u(-2.0, 2.0), step(-0.5, 0.5);
   std::vector<Pose> p0, pt;
   std::vector<double> b(m.links.size());
+  DistanceScratch scratch;
   for (int i = 0; i < 200; ++i) {
     double q0[6], dq[6], qt[6];
     for (int j = 0; j < 6; ++j) q0[j] = u(rng), dq[j] = step(rng);
@@ -66,6 +67,16 @@ TEST(ArmMotionBound, NoVertexMovesFartherThanTheBound) {
         double moved = 0.0;
         for (const Vec3& v : m.links[l].collision->vertices()) moved = std::max(moved, (pt[l] * v - p0[l] * v).norm());
         EXPECT_LE(moved, t * b[l] * (1 + 1e-12)) << m.links[l].name;
+      }
+      // Link pairs: the distance changes by at most the pair's bound (the joints between them).
+      if (i % 4 != 0) continue;
+      for (const auto& [l1, l2] : scene.selfPairs.enabledPairs()) {
+        const double d0 = distance(*m.links[l1].collision, p0[l1], *m.links[l2].collision, p0[l2],
+                                   DistanceOptions::exactDistance(), scratch).distance;
+        const double dt = distance(*m.links[l1].collision, pt[l1], *m.links[l2].collision, pt[l2],
+                                   DistanceOptions::exactDistance(), scratch).distance;
+        EXPECT_LE(std::abs(dt - d0), t * bound.pairDisplacement(l1, l2, dq) + 1e-12)
+            << m.links[l1].name << "-" << m.links[l2].name;
       }
     }
   }

@@ -28,6 +28,12 @@ namespace adsd::planner {
 /// from the axis is used (max over C's vertices of |p - (p.a)a|, a fixed set as C turns about a).
 /// Integrating the speed over t bounds the path, hence the displacement, by B_L(dq) (Schwarzer,
 /// Saha and Latombe 2002, sec. 3, the bound for a chain of links).
+///
+/// Two links: their distance is unchanged by a rigid motion of both, so in the frame of their
+/// deepest common ancestor the joints above it do nothing, and the distance changes by at most
+///   B_{L1,L2}(dq) = sum over joints i beyond exactly one of the two links' common chain of
+///                   (K(L1, i) + K(L2, i)) |dq_i|
+/// (pairDisplacement): a wrist pair near contact then costs only the wrist joints' motion.
 class ArmMotionBound {
  public:
   explicit ArmMotionBound(const ArmModel& model);
@@ -37,10 +43,13 @@ class ArmMotionBound {
   /// \brief B_L(dq) for every link into \p out (model.links.size() values; 0 for links without
   /// geometry and for links no moved joint carries).
   void linkDisplacements(const double* dq, double* out) const;
+  /// \brief B_{L1,L2}(dq): the most the distance between links \p a and \p b can change.
+  double pairDisplacement(std::size_t a, std::size_t b, const double* dq) const;
 
  private:
   std::size_t links_, dof_;
   std::vector<double> k_;  ///< links_ x dof_, row-major
+  std::vector<char> beyond_;  ///< links_ x dof_: link lies beyond coordinate i's joint
 };
 
 }  // namespace adsd::planner

@@ -22,7 +22,7 @@ namespace adsd::planner {
 struct ArmMotionCounts {
   std::uint64_t motions = 0;           ///< checkMotion calls
   std::uint64_t rejected = 0;          ///< motions found (or not proven) invalid
-  std::uint64_t clearanceQueries = 0;  ///< states whose clearance a motion check asked for
+  std::uint64_t clearanceQueries = 0;  ///< states a motion check queried (the start's validity, weighted clearances)
 };
 
 /// \brief Certified motion checking for an arm (issue 17), by the bisection of Schwarzer, Saha and
@@ -31,7 +31,7 @@ struct ArmMotionCounts {
 /// For a segment [a, b] of the motion, let c(a), c(b) be the clearances at its ends (less the
 /// safety margin and a roundoff allowance) and M the most any checked pair's distance can change
 /// over the segment: for a link against an obstacle, the link's displacement bound B_L
-/// (ArmMotionBound); for two links, B_L1 + B_L2, as both move. A contact at s in [a, b] needs
+/// (ArmMotionBound); for two links, B_{L1,L2}, the joints between them (both move). A contact at s in [a, b] needs
 /// M (s - a)/(b - a) >= c(a) and M (b - s)/(b - a) >= c(b), hence M >= c(a) + c(b). So when
 /// M < c(a) + c(b) the segment is free (the paper's eq. (1)); otherwise the segment is split at its
 /// middle, whose clearance is measured, and both halves are checked, left first. A motion is
@@ -39,8 +39,12 @@ struct ArmMotionCounts {
 /// kMinimumStepFraction of the motion would still need splitting (conservative: a valid motion
 /// grazing an obstacle may be rejected, an invalid one is never accepted).
 ///
-/// This version uses the robot's smallest clearance and the largest pair bound (sound, simplest);
-/// B scales with the segment's length, as the motion is linear in joint space (continuous joints
+/// Pair by pair: with w_P the pair's bound for the whole motion (B_L, or B_{L1,L2}) and
+/// tau(s) = min over pairs of c_P(s) / w_P (ArmValidityCheckerBase::weightedClearanceUpTo), a
+/// segment of parameter length len is free when len < tau(a) + tau(b), since then
+/// w_P len < c_P(a) + c_P(b) for every pair. A pair near contact that barely moves no longer
+/// forces short segments on a fast link elsewhere, as the robot-wide minimum would. The bound
+/// scales with the segment's length, as the motion is linear in joint space (continuous joints
 /// along the shorter arc, ArmStateSpace).
 ///
 /// Thread-safe: each call allocates its own state; counters are atomic. The base class's

@@ -52,6 +52,15 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// min(clearance, cap) otherwise. Counted as a clearance query.
   double clearanceUpTo(const ompl::base::State* state, double cap) const;
 
+  /// \brief The weighted clearance the certified motion check needs (ArmMotionValidator):
+  ///   min over checked pairs P with w_P > 0 of (distance_P - subtract) / w_P,
+  /// where w_P = linkWeights[L] for link L against an obstacle (one weight per link) and
+  /// selfPairWeights[k] for the k-th pair of scene().selfPairs.enabledPairs(); weights >= 0. A
+  /// lower bound of it that equals it when below \p cap and is at least \p cap otherwise; pairs
+  /// with w_P = 0 are left out (their distance cannot change). Counted as a clearance query.
+  double weightedClearanceUpTo(const ompl::base::State* state, const double* linkWeights,
+                               const double* selfPairWeights, double subtract, double cap) const;
+
   double safetyMargin() const { return safetyMargin_; }
   /// \brief The scene's length scale: the diagonal of the box around the obstacles and the arm's
   /// reach (the arm's links placed anywhere within reach of the root).
@@ -103,6 +112,7 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   std::vector<double> ballRadii_;
   std::vector<Eigen::AlignedBox3d> linkBoxes_;  ///< link frame, per link body
   std::vector<std::pair<std::size_t, std::size_t>> selfPairs_;  ///< link bodies, enabled pairs
+  std::vector<std::size_t> selfPairIndex_;  ///< link bodies a x b -> index into selfPairs_
   std::vector<Vec3> obstacleCentres_, obstacleHalves_;  ///< world frame, per obstacle part
   mutable QueryCounters counters_;
 };

@@ -1,0 +1,52 @@
+#include "adsd/planner/arm_pair_sampling.h"
+
+#include <random>
+#include <vector>
+
+#include "adsd/distance.h"
+#include "adsd/error.h"
+#include "adsd/planner/arm_kinematics.h"
+
+namespace adsd::planner {
+
+PairSamplingResult disablePairsBySampling(const ArmModel& model, ArmCollisionPairs& pairs, std::size_t states,
+                                          std::uint64_t seed) {
+  if (states == 0) throw InputError("pair sampling: the number of states must be > 0");
+  // The links are queried many times: a copy with sub-mesh trees.
+  ArmModel prepared = model;
+  prepared.buildHierarchies();
+  const std::vector<std::pair<std::size_t, std::size_t>> tested = pairs.enabledPairs();
+  std::vector<std::size_t> contacts(tested.size(), 0);
+  std::mt19937_64 rng(seed);
+  std::vector<double> q(model.dof());
+  std::vector<Pose> poses;
+  DistanceScratch scratch;
+  for (std::size_t s = 0; s < states; ++s) {
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const ArmJoint& joint = model.joints[model.activeJoints[i]];
+      q[i] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
+    }
+    forwardKinematics(prepared, q.data(), poses);
+    for (std::size_t k = 0; k < tested.size(); ++k) {
+      const auto [a, b] = tested[k];
+      const DistanceResult r = distance(*prepared.links[a].collision, poses[a], *prepared.links[b].collision, poses[b],
+                                        DistanceOptions::aboveThreshold(0.0), scratch);
+      if (r.status != DistanceStatus::aboveThreshold) ++contacts[k];
+    }
+  }
+  PairSamplingResult result;
+  result.states = states;
+  result.pairsTested = tested.size();
+  for (std::size_t k = 0; k < tested.size(); ++k) {
+    if (contacts[k] == states) {
+      pairs.disable(tested[k].first, tested[k].second, "Always");
+      ++result.alwaysInContact;
+    } else if (contacts[k] == 0) {
+      pairs.disable(tested[k].first, tested[k].second, "Never");
+      ++result.neverInContact;
+    }
+  }
+  return result;
+}
+
+}  // namespace adsd::planner
