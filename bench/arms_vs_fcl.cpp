@@ -85,7 +85,7 @@ adsd::cli::CommandLine commandLine() {
       "           [--summary-md FILE]",
       "Arm problems: our checker against FCL's per state (validity, clearance), certified against discrete motion "
       "checking per motion.",
-      "Exit status: 0, 2 for a bad command line or problem, 3 when an answer disagrees with FCL's or a certified "
+      "Exit status: 0, 2 for a bad command line or a broken problem (the others are still measured), 3 when an answer disagrees with FCL's or a certified "
       "motion is found colliding.");
   line.options()("problems", adsd::cli::value("DIR"),
                  "directory of arm problems, DIR/NAME/problem.cfg (default: the shipped problems/arm)")(
@@ -138,6 +138,7 @@ int runProblem(const std::string& cfg, const Options& o, ProblemRow& row) {
   ap::CheckingOptions checking;  // our checker, exact clearance
   const ap::ArmPlanningProblem problem(ap::readMotionBenchMakerProblem(cfg), checking);
   const ob::SpaceInformationPtr& si = problem.spaceInformation();
+  if (!si->isSetup()) si->setup();  // the discrete validator's resolution (longest valid segment)
   const ap::ArmValidityCheckerBase& ours = *problem.checker();
   const ap::FclArmValidityChecker fcl(si, problem.scene());
   const ap::ArmModel& model = problem.model();
@@ -288,7 +289,13 @@ int run(const Options& o) {
   int status = 0;
   for (const std::string& cfg : cfgs) {
     ProblemRow row;
-    status = std::max(status, runProblem(cfg, o, row));
+    try {
+      status = std::max(status, runProblem(cfg, o, row));
+    } catch (const adsd::InputError& e) {  // a broken problem: said, the others still measured
+      std::fprintf(stderr, "bench_arms: %s\n", e.what());
+      status = std::max(status, 2);
+      continue;
+    }
     rows.push_back(row);
     std::printf("%-18s dof %zu valid %3.0f%%  validity %7.1f / %7.1f = %.2f  clearance %7.1f / %7.1f = %.2f  motion: %.1f "
                 "discrete checks, %.1f certified queries; %.0f / %.0f us\n",

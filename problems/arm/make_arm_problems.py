@@ -72,7 +72,7 @@ WAM_START = [0.0, -0.4, 0.0, 2.4, 0.0, 0.5, 0.0]
 GOALS = {
     # The palm (KR5) or the last link (WAM) above the table's middle, between the objects.
     "kr5_table_pick": (KR5_START, [0.041, 0.43, 0.771, -0.413, 0.928, -1.457]),
-    "wam_table_pick": (WAM_START, [-0.005, 0.751, 0.037, 2.065, -0.108, 1.455, -0.737]),
+    "wam_table_pick": (WAM_START, [0.137, 0.621, -0.115, 2.32, -0.123, 1.308, -0.752]),
     # Into the shelf's second level.
     "kr5_shelf": (KR5_START, [-0.008, 0.218, 0.778, -3.138, 0.886, -1.345]),
     "wam_shelf": (WAM_START, [0.218, 0.87, -0.533, 1.195, -1.485, 1.223, -0.527]),
