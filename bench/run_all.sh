@@ -14,8 +14,10 @@
 # (--readme FILE and --no-readme are the old names of --page and --no-paste.)
 #
 # BUILD_DIR (default: build) must hold a Release build of the targets
-#   bench_distance_vs_fcl bench_scenes bench_bands bench_scene_counters bench_checker_calls adsd adsd_problems
-# and the real meshes must be cached (problems/data/fetch_meshes.sh). Writes bench/results/:
+#   bench_distance_vs_fcl bench_scenes bench_bands bench_scene_counters bench_checker_calls bench_arms adsd
+#   adsd_problems
+# and the real meshes and robots must be cached (problems/data/fetch_meshes.sh, fetch_robots.sh).
+# Writes bench/results/:
 #   distance_vs_fcl.txt   bench_distance_vs_fcl (cow x cow from scratch against FCL)
 #   scenes.csv, scenes.md, table1.md, time_vs_error.png, time_vs_triangles.png
 #                         bench_scenes: every scene, every method, against the oracle
@@ -25,6 +27,8 @@
 #                         bench_bands: every query mode against FCL band by band (near, mid, far,
 #                         uniform planning states, in collision) on every rigid scene and two more
 #                         real pairs; bench/plot_bands.py: time against error per band
+#   arms.txt, arms.md     bench_arms: the arm problems (problems/arm), our checker against FCL's per
+#                         state (validity, clearance) and certified against discrete motion checks
 #   profile_modes.md      bench/profile_modes.py: where exact and 1 % tolerance queries spend their
 #                         time, per stage of the traversal (perf; skipped when perf cannot sample)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
@@ -61,7 +65,7 @@ while [[ $# -gt 0 ]]; do
     --long) long=1 ;;
     --paste-only) paste_only=1 ;;
     --page|--readme) [[ $# -ge 2 ]] || { echo "run_all.sh: $1 needs a file" >&2; exit 2; }; page=$2; shift ;;
-    -h|--help) sed -n '2,52p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,56p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_all.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
@@ -144,6 +148,17 @@ paste_results() {
       "$build/bench/bench_bands $(bands_options | sed "s#$HOME#~#g") --summary-md bench/results/bands_summary.md" \
       bench/results/bands_summary.md
   fi
+  if [[ -f bench/results/arms.md ]]; then
+    /usr/bin/python3 bench/paste_results.py "$page" arms \
+      "$build/bench/bench_arms --summary-md bench/results/arms.md" bench/results/arms.md
+    # The README's: the medians' line alone (the page has the table).
+    local arms
+    arms=$(mktemp --suffix=.md)
+    grep '^Median' bench/results/arms.md >"$arms"
+    /usr/bin/python3 bench/paste_results.py README.md headline_arms \
+      "$build/bench/bench_arms --summary-md bench/results/arms.md (its last line)" "$arms"
+    rm -f "$arms"
+  fi
   # The README's headline: a few scenes' main ratios, cut from ratios.md (first table only).
   local headline
   headline=$(mktemp --suffix=.md)
@@ -162,7 +177,7 @@ if [[ $paste_only -eq 1 ]]; then
   exit 0
 fi
 for program in bench/bench_distance_vs_fcl bench/bench_scenes bench/bench_bands bench/bench_scene_counters \
-  bench/bench_checker_calls planner/app/adsd; do
+  bench/bench_checker_calls bench/bench_arms planner/app/adsd; do
   [[ -x "$build/$program" ]] || { echo "run_all.sh: no $build/$program (build the targets first, see --help)" >&2; exit 2; }
 done
 [[ -d "$build/problem_files" ]] || { echo "run_all.sh: no $build/problem_files (build adsd_problems)" >&2; exit 2; }
@@ -204,6 +219,7 @@ step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv'
 step bands sh -c "'$build/bench/bench_bands' $(bands_options) --csv '$staging/bands.csv' \
   --summary-md '$staging/bands_summary.md' > '$staging/bands.txt'"
 step bands_plot /usr/bin/python3 bench/plot_bands.py "$staging/bands.csv" "$staging/bands.png"
+step arms sh -c "'$build/bench/bench_arms' --summary-md '$staging/arms.md' > '$staging/arms.txt'"
 step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
 step checker_calls sh -c "'$build/bench/bench_checker_calls' $(checker_call_problems "$build") > '$staging/checker_calls.txt'"
 for from in rrtconnect prm; do
