@@ -2,7 +2,7 @@
 // problems (problems/arm): it solves them with RRTConnect and either checker, the path file's
 // states lie within the joint limits, are valid by our checker and by FCL's, and the straight
 // joint-space motions between them are collision-free by an independent dense check (FCL's
-// checker at a tenth of the validity-checking resolution); bad arm problems stop with exit status 2
+// checker at states 0.002 apart in joint space); bad arm problems stop with exit status 2
 // and one line naming the file and line, and write nothing. ArmPlanningProblem in process: start
 // joints from the scene's robot_state, unknown start joints warned of, the goal's threshold.
 //
