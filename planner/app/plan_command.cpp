@@ -174,6 +174,15 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   return planner;
 }
 
+/// The checker, motion validator and objective the options ask for.
+CheckingOptions checkingOptions(const PlanArguments& a) {
+  CheckingOptions options;
+  options.checker = a.checker;
+  options.motion = a.motion;
+  options.objective = a.objective;
+  return options;
+}
+
 /// What one solve did: status, times and the planner's own queries (before the simplifier's).
 struct SolveReport {
   ompl::base::PlannerStatus status;
@@ -225,11 +234,7 @@ int planArm(const PlanArguments& a) {
     throw cli::UsageError("--html: the browser viewer does not show arms yet ('" + a.problem + "' is an arm problem)");
   }
   const MotionBenchMakerProblem file = readMotionBenchMakerProblem(a.problem);
-  CheckingOptions options;
-  options.checker = a.checker;
-  options.motion = a.motion;
-  options.objective = a.objective;
-  ArmPlanningProblem problem(file, options);
+  ArmPlanningProblem problem(file, checkingOptions(a));
   for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';
 
   const std::string plannerName = a.planner.value_or("rrtconnect");
@@ -292,11 +297,7 @@ int plan(const std::vector<std::string>& args) {
   const ProblemFile file = readProblemFile(a.problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd plan: warning: " << w << '\n';
 
-  CheckingOptions options;
-  options.checker = a.checker;
-  options.motion = a.motion;
-  options.objective = a.objective;
-  PlanningProblem problem(file, options);
+  PlanningProblem problem(file, checkingOptions(a));
   for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';
 
   std::string plannerName;

@@ -2,8 +2,9 @@
 // problems (problems/arm): it solves them with RRTConnect and either checker, the path file's
 // states lie within the joint limits, are valid by our checker and by FCL's, and the straight
 // joint-space motions between them are collision-free by an independent dense check (FCL's
-// checker at a tenth of the validity-checking resolution); bad arm problems stop with exit status 2
-// and one line naming the file and line, and write nothing.
+// checker at states 0.002 apart in joint space); bad arm problems stop with exit status 2
+// and one line naming the file and line, and write nothing. ArmPlanningProblem in process: start
+// joints from the scene's robot_state, unknown start joints warned of, the goal's threshold.
 //
 // Needs the robots problems/data/fetch_robots.sh puts in ~/.cache/adsd/robots (or ${ADSD_ROBOTS});
 // every test is skipped with a message naming the script when they are missing.
@@ -280,6 +281,68 @@ TEST(ArmPlanCommand, HtmlIsAUsageErrorForArms) {
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("does not show arms yet"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(html));
+}
+
+// ---- ArmPlanningProblem in process: where start joints come from, the goal's threshold ----------
+
+/// A copy of kr5_table_pick's scene with a robot_state giving \p joint the value \p value.
+std::string sceneWithRobotState(const std::string& joint, double value) {
+  std::string text = readAll(kArmProblems + "/kr5_table_pick/scene.yaml");
+  return text + "robot_state:\n  joint_state:\n    name: ['" + joint + "']\n    position: [" + std::to_string(value) +
+         "]\n";
+}
+
+/// A cfg in \p dir over \p sceneText and \p requestText.
+MotionBenchMakerProblem problemWith(const fs::path& dir, const std::string& sceneText, const std::string& requestText) {
+  std::ofstream(dir / "scene.yaml") << sceneText;
+  std::ofstream(dir / "request.yaml") << requestText;
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = ${ADSD_ROBOTS}/KR5/KR5 sixx R650.urdf\n"
+                                        "scene = scene.yaml\nrequest = request.yaml\npackage_path = ${ADSD_ROBOTS}\n";
+  return readMotionBenchMakerProblem((dir / "problem.cfg").string());
+}
+
+TEST(ArmPlanningProblem, StartFallsBackToTheScenesRobotStateAndWarnsOfUnknownJoints) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  // The request without wrist_roll (the scene gives it) and with a gripper joint the KR5 lacks.
+  const std::string request = replaced(
+      replaced(shippedRequest(), "'wrist_pitch', 'wrist_roll']", "'wrist_pitch', 'gripper']"),
+      "position: [0, -0.6, -1.2, 0, 0.5, 0]", "position: [0, -0.6, -1.2, 0, 0.5, 0.02]");
+  const ArmPlanningProblem p(problemWith(dir, sceneWithRobotState("wrist_roll", 0.25), request), CheckingOptions{});
+  ASSERT_EQ(p.startJoints().size(), 6u);
+  EXPECT_EQ(p.startJoints()[5], 0.25);
+  EXPECT_EQ(p.startJoints()[4], 0.5);
+  bool warned = false;
+  for (const std::string& w : p.warnings()) warned = warned || w.find("'gripper'") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // The shipped tolerances are 0.001: the GoalState's threshold.
+  EXPECT_EQ(p.goalThreshold(), 0.001);
+  EXPECT_EQ(p.allowedPlanningTime().value_or(0.0), 10.0);
+}
+
+TEST(ArmPlanningProblem, JointWithoutAStartValueNamesTheRequest) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const std::string request = replaced(shippedRequest(), "'wrist_pitch', 'wrist_roll']", "'wrist_pitch', 'gripper']");
+  try {
+    ArmPlanningProblem(problemWith(dir, readAll(kArmProblems + "/kr5_table_pick/scene.yaml"), request),
+                       CheckingOptions{});
+    FAIL() << "no error";
+  } catch (const adsd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "request.yaml").string() + ": the start state has no position for "
+                                         "joint 'wrist_roll'"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ArmPlanningProblem, ZeroToleranceGetsTheFloor) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const std::string request = replaced(shippedRequest(), "tolerance_below: 0.001", "tolerance_below: 0");
+  const ArmPlanningProblem p(problemWith(dir, readAll(kArmProblems + "/kr5_table_pick/scene.yaml"), request),
+                             CheckingOptions{});
+  EXPECT_EQ(p.goalThreshold(), kArmGoalThresholdFloor);
 }
 
 TEST(ArmPlanCommand, ArmCfgIsRecognized) {
