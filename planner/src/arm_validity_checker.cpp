@@ -3,34 +3,14 @@
 #include <cmath>
 
 #include "adsd/error.h"
+#include "clearance_queries.h"
 
 namespace adsd::planner {
 
+using detail::requireClearanceOptions;
+using detail::threadScratch;
+
 namespace {
-
-DistanceScratch& threadScratch() {
-  thread_local DistanceScratch scratch;
-  return scratch;
-}
-
-void requireClearanceOptions(const DistanceOptions& o) {
-  switch (o.mode) {
-    case QueryMode::exact:
-      return;
-    case QueryMode::tolerance:
-      if (!(o.absTolerance >= 0.0) || !(o.relTolerance >= 0.0) || !std::isfinite(o.absTolerance) ||
-          !std::isfinite(o.relTolerance)) {
-        throw InputError("clearance options: tolerances must be finite and >= 0");
-      }
-      return;
-    case QueryMode::cap:
-      if (!(o.cap > 0.0)) throw InputError("clearance options: the cap must be > 0");
-      return;
-    case QueryMode::threshold:
-      break;
-  }
-  throw InputError("clearance options: the threshold mode answers validity, not clearance; use exact, tolerance or cap");
-}
 
 /// The links and obstacles are rigid: every mesh keeps a tree, built once on a copy of the scene
 /// (so the caller's scene, which FCL's checker may share, is left as it was).

@@ -3,44 +3,26 @@
 #include <algorithm>
 #include <limits>
 
-#include <fcl/geometry/bvh/BVH_model.h>
-#include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
 #include "adsd/error.h"
+#include "fcl_model.h"
 
 namespace adsd::planner {
 
-using FclModel = fcl::BVHModel<fcl::OBBRSSd>;
+using detail::FclModel;
+using detail::buildFclModel;
 
 struct FclArmValidityChecker::Models {
   std::vector<std::shared_ptr<FclModel>> bodies;  ///< by body index (links, then obstacle parts)
 };
 
-namespace {
-
-// As fcl_validity_checker.cpp builds them.
-std::shared_ptr<FclModel> buildModel(const Mesh& mesh) {
-  std::vector<fcl::Vector3d> vertices(mesh.vertices().begin(), mesh.vertices().end());
-  std::vector<fcl::Triangle> triangles;
-  triangles.reserve(mesh.triangleCount());
-  for (const TriangleIndices& t : mesh.triangles()) triangles.emplace_back(t[0], t[1], t[2]);
-  auto model = std::make_shared<FclModel>();
-  if (model->beginModel() != fcl::BVH_OK || model->addSubModel(vertices, triangles) != fcl::BVH_OK ||
-      model->endModel() != fcl::BVH_OK) {
-    throw InputError(mesh.name() + ": FCL could not build its OBBRSS hierarchy");
-  }
-  return model;
-}
-
-}  // namespace
-
 FclArmValidityChecker::FclArmValidityChecker(const ompl::base::SpaceInformationPtr& si, const ArmScene& scene,
                                              double safetyMargin)
     : ArmValidityCheckerBase(si, std::make_shared<ArmScene>(scene), safetyMargin), models_(std::make_unique<Models>()) {
   for (std::size_t b = 0; b < linkBodies() + scene_->environment.size(); ++b) {
-    models_->bodies.push_back(buildModel(bodyMesh(b)));
+    models_->bodies.push_back(buildFclModel(bodyMesh(b)));
   }
   specs_.clearanceComputationType = ompl::base::StateValidityCheckerSpecs::EXACT;
 }

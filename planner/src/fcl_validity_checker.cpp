@@ -3,44 +3,27 @@
 #include <algorithm>
 #include <limits>
 
-#include <fcl/geometry/bvh/BVH_model.h>
-#include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
 #include "adsd/error.h"
+#include "fcl_model.h"
 
 namespace adsd::planner {
 
-using FclModel = fcl::BVHModel<fcl::OBBRSSd>;
+using detail::FclModel;
+using detail::buildFclModel;
 
 struct FclValidityChecker::Models {
   std::vector<std::shared_ptr<FclModel>> robot;
   std::vector<std::shared_ptr<FclModel>> environment;
 };
 
-namespace {
-
-std::shared_ptr<FclModel> buildModel(const Mesh& mesh) {
-  std::vector<fcl::Vector3d> vertices(mesh.vertices().begin(), mesh.vertices().end());
-  std::vector<fcl::Triangle> triangles;
-  triangles.reserve(mesh.triangleCount());
-  for (const TriangleIndices& t : mesh.triangles()) triangles.emplace_back(t[0], t[1], t[2]);
-  auto model = std::make_shared<FclModel>();
-  if (model->beginModel() != fcl::BVH_OK || model->addSubModel(vertices, triangles) != fcl::BVH_OK ||
-      model->endModel() != fcl::BVH_OK) {
-    throw InputError(mesh.name() + ": FCL could not build its OBBRSS hierarchy");
-  }
-  return model;
-}
-
-}  // namespace
-
 FclValidityChecker::FclValidityChecker(const ompl::base::SpaceInformationPtr& si,
                                        std::shared_ptr<const RigidBodyScene> scene, double safetyMargin)
     : RigidBodyValidityChecker(si, std::move(scene), safetyMargin), models_(std::make_unique<Models>()) {
-  for (const Mesh& m : scene_->robot) models_->robot.push_back(buildModel(m));
-  for (const Mesh& m : scene_->environment) models_->environment.push_back(buildModel(m));
+  for (const Mesh& m : scene_->robot) models_->robot.push_back(buildFclModel(m));
+  for (const Mesh& m : scene_->environment) models_->environment.push_back(buildFclModel(m));
   // fcl::distance with zero relative and absolute error is FCL's exact mode.
   specs_.clearanceComputationType = ompl::base::StateValidityCheckerSpecs::EXACT;
 }

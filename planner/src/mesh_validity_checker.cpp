@@ -4,35 +4,14 @@
 #include <limits>
 
 #include "adsd/error.h"
+#include "clearance_queries.h"
 
 namespace adsd::planner {
 
+using detail::requireClearanceOptions;
+using detail::threadScratch;
+
 namespace {
-
-/// The scratch of the calling thread (see the class comment: one per thread serves every checker).
-DistanceScratch& threadScratch() {
-  thread_local DistanceScratch scratch;
-  return scratch;
-}
-
-void requireClearanceOptions(const DistanceOptions& o) {
-  switch (o.mode) {
-    case QueryMode::exact:
-      return;
-    case QueryMode::tolerance:
-      if (!(o.absTolerance >= 0.0) || !(o.relTolerance >= 0.0) || !std::isfinite(o.absTolerance) ||
-          !std::isfinite(o.relTolerance)) {
-        throw InputError("clearance options: tolerances must be finite and >= 0");
-      }
-      return;
-    case QueryMode::cap:
-      if (!(o.cap > 0.0)) throw InputError("clearance options: the cap must be > 0");
-      return;
-    case QueryMode::threshold:
-      break;
-  }
-  throw InputError("clearance options: the threshold mode answers validity, not clearance; use exact, tolerance or cap");
-}
 
 /// Robot and environment are rigid here: every part gets its sub-mesh tree once, and every query
 /// reuses it (adsd/mesh_hierarchy.h, issue 6). The meshes are copied so that the caller's scene

@@ -21,9 +21,12 @@
 #include <boost/program_options/parsers.hpp>
 
 #include "adsd/error.h"
+#include "decimal_number.h"
 #include "adsd/planner/planner_registry.h"
 
 namespace adsd::planner {
+
+using detail::isDecimalNumber;
 
 namespace {
 
@@ -152,32 +155,6 @@ std::vector<Entry> parseWithBoost(const std::string& text, const std::string& so
 }
 
 SourceLocation locate(const std::string& source, const Entry& e) { return {source, e.line, e.key}; }
-
-/// Whether \p v is written as a decimal number: an optional sign, digits with an optional point (at
-/// least one digit), an optional exponent; nothing else. This is the form both strtod and OMPL's
-/// classic-locale conversion read the same way (strtod alone would also take hexadecimal, "inf",
-/// "nan" and leading blanks, which OMPL refuses by throwing).
-bool isDecimalNumber(const std::string& v) {
-  std::size_t i = 0;
-  const auto digitsAt = [&](std::size_t& k) {
-    const std::size_t from = k;
-    while (k < v.size() && std::isdigit(static_cast<unsigned char>(v[k]))) ++k;
-    return k - from;
-  };
-  if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
-  std::size_t digits = digitsAt(i);
-  if (i < v.size() && v[i] == '.') {
-    ++i;
-    digits += digitsAt(i);
-  }
-  if (digits == 0) return false;
-  if (i < v.size() && (v[i] == 'e' || v[i] == 'E')) {
-    ++i;
-    if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
-    if (digitsAt(i) == 0) return false;
-  }
-  return i == v.size();
-}
 
 double parseNumber(const Entry& e, const std::string& source) {
   const std::string& v = e.value;

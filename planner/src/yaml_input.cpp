@@ -12,8 +12,11 @@
 #include <stdlib.h>
 
 #include "adsd/error.h"
+#include "decimal_number.h"
 
 namespace adsd::planner::yaml {
+
+using adsd::planner::detail::isDecimalNumber;
 
 namespace {
 
@@ -25,31 +28,6 @@ constexpr std::size_t kMaxEchoedCharacters = 60;
 /// tiny file hold its few values).
 constexpr std::size_t kBudgetPerByte = 4;
 constexpr std::size_t kBudgetSlack = 1024;
-
-/// An optional sign, digits with an optional point (at least one digit), an optional exponent;
-/// nothing else: the decimal form that strtod reads the same in every locale (the same rule as
-/// the .cfg reader's, problem_file.cpp). YAML's .inf, .nan, hexadecimal and blanks are not it.
-bool isDecimalNumber(const std::string& v) {
-  std::size_t i = 0;
-  const auto digitsAt = [&](std::size_t& k) {
-    const std::size_t from = k;
-    while (k < v.size() && std::isdigit(static_cast<unsigned char>(v[k]))) ++k;
-    return k - from;
-  };
-  if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
-  std::size_t digits = digitsAt(i);
-  if (i < v.size() && v[i] == '.') {
-    ++i;
-    digits += digitsAt(i);
-  }
-  if (digits == 0) return false;
-  if (i < v.size() && (v[i] == 'e' || v[i] == 'E')) {
-    ++i;
-    if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
-    if (digitsAt(i) == 0) return false;
-  }
-  return i == v.size();
-}
 
 const char* kindName(const YAML::Node& n) {
   switch (n.Type()) {

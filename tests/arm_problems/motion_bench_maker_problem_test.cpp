@@ -7,6 +7,7 @@
 
 #include "adsd/error.h"
 #include "adsd/planner/motion_bench_maker_problem.h"
+#include "reader_errors.h"
 #include "scratch_dir.h"
 
 namespace adsd::planner {
@@ -88,16 +89,8 @@ TEST(MotionBenchMakerProblem, ReadsAFileAndNamesItByItsStem) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    parseMotionBenchMakerProblem(text, "arm.cfg", "/p");
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    EXPECT_EQ(message.rfind("arm.cfg", 0), 0u) << message;
-    return message.substr(std::string("arm.cfg").size());
-  }
-  ADD_FAILURE() << "no error for:\n" << text;
-  return "";
+  return test::errorAfterName([](const std::string& t) { parseMotionBenchMakerProblem(t, "arm.cfg", "/p"); }, text,
+                              "arm.cfg");
 }
 
 TEST(MotionBenchMakerProblemErrors, EachNamesTheFileAndLine) {

@@ -6,6 +6,7 @@
 
 #include "adsd/error.h"
 #include "adsd/planner/motion_plan_request_yaml.h"
+#include "reader_errors.h"
 #include "scratch_dir.h"
 
 namespace adsd::planner {
@@ -51,23 +52,12 @@ TEST(MotionPlanRequestYaml, ReadsStartGoalTolerancesAndGroup) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    parseMotionPlanRequestYaml(text, "request.yaml");
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    EXPECT_EQ(message.rfind("request.yaml:", 0), 0u) << message;
-    return message.substr(std::string("request.yaml").size());
-  }
-  ADD_FAILURE() << "no error for:\n" << text;
-  return "";
+  return test::errorAfterName([](const std::string& t) { parseMotionPlanRequestYaml(t, "request.yaml"); }, text,
+                              "request.yaml");
 }
 
 std::string withLine(int line, const std::string& replacement) {
-  std::string text = kRequest;
-  std::size_t begin = 0;
-  for (int i = 1; i < line; ++i) begin = text.find('\n', begin) + 1;
-  return text.substr(0, begin) + replacement + text.substr(text.find('\n', begin));
+  return test::withLineReplaced(kRequest, line, replacement);
 }
 
 #define EXPECT_ERROR(text, prefix, part)             \

@@ -9,6 +9,7 @@
 
 #include "adsd/error.h"
 #include "adsd/planner/planning_scene_yaml.h"
+#include "reader_errors.h"
 #include "scratch_dir.h"
 
 namespace adsd::planner {
@@ -133,25 +134,12 @@ TEST(PlanningSceneYaml, ReadsFromAFileAndWithoutAWorld) {
 
 /// The message of the InputError that reading \p text as "bad.yaml" raises, after the file name.
 std::string errorOf(const std::string& text) {
-  try {
-    parsePlanningSceneYaml(text, "bad.yaml");
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    EXPECT_EQ(message.rfind("bad.yaml:", 0), 0u) << message;
-    return message.substr(std::string("bad.yaml").size());
-  }
-  ADD_FAILURE() << "no error for:\n" << text;
-  return "";
+  return test::errorAfterName([](const std::string& t) { parsePlanningSceneYaml(t, "bad.yaml"); }, text, "bad.yaml");
 }
 
 /// kScene with line \p line (1-based) replaced by \p replacement.
 std::string withLine(int line, const std::string& replacement) {
-  std::string text = kScene;
-  std::size_t begin = 0;
-  for (int i = 1; i < line; ++i) begin = text.find('\n', begin) + 1;
-  const std::size_t end = text.find('\n', begin);
-  return text.substr(0, begin) + replacement + text.substr(end);
+  return test::withLineReplaced(kScene, line, replacement);
 }
 
 #define EXPECT_ERROR(text, prefix, part)                              \
