@@ -34,3 +34,12 @@ inline std::string withLineReplaced(const std::string& text, int line, const std
 }
 
 }  // namespace adsd::planner::test
+
+/// The message errorOf(text) (each test file's reader, through errorAfterName) gives starts with
+/// \p prefix (":LINE:") and contains \p part.
+#define EXPECT_ERROR(text, prefix, part)             \
+  do {                                               \
+    const std::string m = errorOf(text);             \
+    EXPECT_EQ(m.rfind(prefix, 0), 0u) << m;          \
+    EXPECT_NE(m.find(part), std::string::npos) << m; \
+  } while (0)

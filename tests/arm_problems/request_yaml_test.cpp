@@ -60,13 +60,6 @@ std::string withLine(int line, const std::string& replacement) {
   return test::withLineReplaced(kRequest, line, replacement);
 }
 
-#define EXPECT_ERROR(text, prefix, part)             \
-  do {                                               \
-    const std::string m = errorOf(text);             \
-    EXPECT_EQ(m.rfind(prefix, 0), 0u) << m;          \
-    EXPECT_NE(m.find(part), std::string::npos) << m; \
-  } while (0)
-
 TEST(MotionPlanRequestYamlErrors, StartNamesAndPositionsOfDifferentLengths) {
   EXPECT_ERROR(withLine(9, "    position: [0.1, -0.2]"), ":9:", "2 positions for 3 joint names");
   EXPECT_ERROR(withLine(8, "    name: [a, b, a]"), ":8:", "joint 'a' appears twice");

@@ -142,13 +142,6 @@ std::string withLine(int line, const std::string& replacement) {
   return test::withLineReplaced(kScene, line, replacement);
 }
 
-#define EXPECT_ERROR(text, prefix, part)                              \
-  do {                                                                \
-    const std::string m = errorOf(text);                              \
-    EXPECT_EQ(m.rfind(prefix, 0), 0u) << m;                           \
-    EXPECT_NE(m.find(part), std::string::npos) << m;                  \
-  } while (0)
-
 TEST(PlanningSceneYamlErrors, BrokenYamlNamesTheLine) {
   EXPECT_ERROR(withLine(16, "          dimensions: [0.4, 0.2, 0.1"), ":17:", "not valid YAML");
   EXPECT_ERROR("a:\n  - b\n  c: d\n", ":3:", "not valid YAML");
