@@ -3,7 +3,7 @@
 /// uniform states over a planning problem's environment box, and in collision.
 ///
 ///   bench_bands [--scenes a,b,...] [--pairs A.off:B.off,...] [--bands near,...] [--poses N]
-///               [--rounds R] [--seed S] [--csv FILE] [--summary-md FILE] [--quick]
+///               [--rounds R] [--seed S] [--csv FILE] [--summary-md FILE] [--quick] [--counters]
 ///
 /// Why bands: a planner asks for clearance at every distance, mostly far from contact, while
 /// bench_scenes places its queries near contact only. Each band is drawn with FCL (placement
@@ -69,6 +69,7 @@ struct Options {
   std::string csv;
   std::string summaryMarkdown;
   std::vector<std::string> bands;  // empty: every band
+  bool counters = false;           // also print each band's work per query, ours and FCL's
 };
 
 /// One band's poses and how they were drawn.
@@ -101,7 +102,7 @@ adsd::cli::CommandLine commandLine() {
   adsd::cli::CommandLine line(
       "bench_bands",
       "bench_bands [--scenes a,b,...] [--pairs A:B,...] [--bands near,...] [--poses N] [--rounds R] [--seed S]\n"
-      "            [--csv FILE] [--summary-md FILE] [--quick]",
+      "            [--csv FILE] [--summary-md FILE] [--quick] [--counters]",
       "Every query mode against FCL, band by band: near contact, mid range, far apart, uniform planning states, "
       "in collision.",
       "Exit status: 0, 2 for a bad command line or a missing mesh, 3 when an answer disagrees with FCL's.");
@@ -115,7 +116,9 @@ adsd::cli::CommandLine commandLine() {
       "seed", adsd::cli::value("S"), "seed of every band's drawing (default 2611)")(
       "csv", adsd::cli::value("FILE"), "one row per query and method: scene, band, method, query, L, answer, microseconds")(
       "summary-md", adsd::cli::value("FILE"), "also write the per-band summary as a Markdown table")(
-      "quick", "10 poses, 1 round: a smoke run");
+      "quick", "10 poses, 1 round: a smoke run")(
+      "counters", "also print each band's mean work per exact query, ours (node pairs, splits, GJK runs, triangle "
+                  "pairs) and FCL's (bounding-volume and triangle tests), counted in an untimed pass");
   return line;
 }
 
@@ -127,6 +130,7 @@ Options optionsFrom(const adsd::cli::Arguments& given) {
   o.csv = given.text("csv").value_or("");
   o.summaryMarkdown = given.text("summary-md").value_or("");
   if (given.has("quick")) o.poses = 10, o.rounds = 1;
+  o.counters = given.has("counters");
   o.bands = splitList(given.text("bands").value_or(""));
   for (const std::string& band : o.bands) {
     if (band != "near" && band != "mid" && band != "far" && band != "uniform" && band != "collision") {
@@ -198,6 +202,29 @@ struct BandResult {
   double worstError = 0;          // max |ours - FCL| / L
   bool distances = true;          // false: the collision band (validity only)
 };
+
+/// The mean work of an exact query over \p poses, ours on the trees and FCL's, in an untimed pass
+/// (--counters): what explains a band's ratio (node pairs against bounding-volume tests, triangle
+/// pairs against FCL's triangle tests).
+void printWork(const Mesh& a, const Mesh& b, const adsd::bench::FclObbrssModel& fa,
+               const adsd::bench::FclObbrssModel& fb, const std::vector<PosePair>& poses) {
+  adsd::DistanceScratch scratch;
+  double nodePairs = 0, split = 0, gjk = 0, triangles = 0, fclVolumes = 0, fclTriangles = 0;
+  for (const PosePair& p : poses) {
+    const adsd::DistanceResult r = adsd::distance(a, p.a, b, p.b, adsd::DistanceOptions::exactDistance(), scratch);
+    nodePairs += static_cast<double>(r.counters.subMeshPairs);
+    split += static_cast<double>(r.counters.pairsSplit);
+    gjk += static_cast<double>(r.counters.gjkCalls);
+    triangles += static_cast<double>(r.counters.trianglePairsTested);
+    const adsd::bench::FclDistanceWork w = adsd::bench::fclDistanceWork(fa, p.a, fb, p.b);
+    fclVolumes += w.boundingVolumeTests;
+    fclTriangles += w.triangleTests;
+  }
+  const double n = static_cast<double>(poses.size());
+  std::printf("%-34s work per exact query: ours %.0f node pairs (%.0f split, %.1f GJK), %.1f triangle pairs; FCL "
+              "%.0f volume tests, %.1f triangle pairs\n",
+              "", nodePairs / n, split / n, gjk / n, triangles / n, fclVolumes / n, fclTriangles / n);
+}
 
 int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool planning, bool planar,
              double length, const Options& o, std::vector<BandResult>& results, std::ofstream* csv) {
@@ -362,6 +389,7 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
                   band.name.c_str(), "", "", "", "", r.validity, r.fclCollide, "", "", r.validity / r.fclCollide, "", "",
                   "", r.nodePairsValidity);
     }
+    if (o.counters && distances) printWork(ta, tb, *fa, *fb, band.poses);
     std::fflush(stdout);
     results.push_back(r);
   }

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include <fcl/fcl.h>
+#include <fcl/narrowphase/detail/traversal/distance/mesh_distance_traversal_node.h>
+#include <fcl/narrowphase/detail/traversal/collision_node.h>
 
 #include "adsd/mesh.h"
 
@@ -73,6 +75,31 @@ inline fcl::DistanceResultd fclDistance(const FclObbrssModel& a, const Pose& pos
   fcl::DistanceResultd result;
   fcl::distance(&a, poseA, &b, poseB, request, result);
   return result;
+}
+
+/// \brief What FCL's exact distance query did: its bounding-volume pair tests and its triangle pair
+/// tests (the traversal's own statistics), beside its answer: the counters to set against ours
+/// (DistanceCounters::subMeshPairs and trianglePairsTested) when a ratio needs explaining.
+struct FclDistanceWork {
+  double distance = 0.0;
+  int boundingVolumeTests = 0;
+  int triangleTests = 0;
+};
+
+/// \brief fclDistance with the traversal's statistics on: the same path fcl::distance takes for two
+/// OBBRSS models (its traversal node, initialised and recursed as FCL's distance function does),
+/// untimed (the statistics cost a little).
+inline FclDistanceWork fclDistanceWork(const FclObbrssModel& a, const Pose& poseA, const FclObbrssModel& b,
+                                       const Pose& poseB) {
+  fcl::DistanceRequestd request(/*enable_nearest_points=*/true);
+  request.rel_err = 0.0;
+  request.abs_err = 0.0;
+  fcl::DistanceResultd result;
+  fcl::detail::MeshDistanceTraversalNodeOBBRSS<double> node;
+  fcl::detail::initialize(node, a, poseA, b, poseB, request, result);
+  node.enable_statistics = true;
+  fcl::detail::distance(&node);
+  return {result.min_distance, node.num_bv_tests, node.num_leaf_tests};
 }
 
 /// \brief The convex hull of a mesh's vertices as an FCL Convex, for hull-overlap checks.
