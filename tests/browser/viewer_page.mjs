@@ -138,12 +138,14 @@ export async function countPixels(page) {
 }
 
 /**
- * The checks of issue 18 on one page: opens offline without errors, draws the scene, the robot
- * starts at the cfg's start and the slider's end puts it at the cfg's goal, the plot's minimum is
- * \p expectedMin (as printed, six significant digits), and the witness points are as far apart as
- * the clearance says. Leaves the robot at the minimum and saves a screenshot to \p screenshot.
+ * The checks every viewer page must pass (issues 18 and 17): opens offline without errors, draws
+ * the scene and the robot, the slider's End key shows the last state, Play moves along the path
+ * and Pause stops it, the plot's minimum is \p expectedMin (as printed, six significant digits),
+ * and the witness points are as far apart as the clearance says. \p atStart(page, state) checks
+ * the robot at state 0 and \p atEnd(page, state) at the last state. Leaves the robot at the
+ * minimum and saves a screenshot to \p screenshot.
  */
-export async function checkViewer(browser, { html, cfg, expectedMin, screenshot }) {
+export async function checkPage(browser, { html, expectedMin, screenshot, atStart, atEnd }) {
   const { page, errors, requests } = await openViewer(browser, html);
   try {
     const offline = requests.filter((u) => !/^(file|blob|data):/.test(u));
@@ -160,12 +162,11 @@ export async function checkViewer(browser, { html, cfg, expectedMin, screenshot 
     assert.ok(pixels.drawn > 0.02 * pixels.total, `only ${pixels.drawn} of ${pixels.total} pixels differ from the background`);
     assert.ok(pixels.robot > 20, `hiding the robot changes only ${pixels.robot} pixels`);
 
-    assertSamePose(state.start, cfgPose(cfg, 'start'), 'robot at state 0 vs the cfg start');
+    await atStart(page, state);
     // As a person would: the End key on the focused slider moves it to its last value.
     await page.locator('#slider').press('End');
-    const end = await page.evaluate(() => ({ index: adsdViewer.index, pose: adsdViewer.robotPose() }));
-    assert.equal(end.index, state.count - 1, 'the slider at its end shows the last state');
-    assertSamePose(end.pose, cfgPose(cfg, 'goal'), 'robot at the slider end vs the cfg goal');
+    assert.equal(await page.evaluate(() => adsdViewer.index), state.count - 1, 'the slider at its end shows the last state');
+    await atEnd(page, state);
 
     // Play from the start: the robot moves along the path by itself.
     if (state.count > 2) {
@@ -197,3 +198,17 @@ export async function checkViewer(browser, { html, cfg, expectedMin, screenshot 
     await page.close();
   }
 }
+
+/**
+ * checkPage() on a rigid robot's page: the robot at the cfg's start at state 0 and at its goal at
+ * the last state.
+ */
+export async function checkViewer(browser, { html, cfg, expectedMin, screenshot }) {
+  return checkPage(browser, {
+    html, expectedMin, screenshot,
+    atStart: async (page, state) => assertSamePose(state.start, cfgPose(cfg, 'start'), 'robot at state 0 vs the cfg start'),
+    atEnd: async (page) => assertSamePose(await page.evaluate(() => adsdViewer.robotPose()), cfgPose(cfg, 'goal'),
+                                          'robot at the slider end vs the cfg goal'),
+  });
+}
+
