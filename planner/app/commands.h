@@ -44,7 +44,7 @@ int planCommand(const std::vector<std::string>& args);
 /// checker and motion validator, its log, SQLite database and plots.
 int benchmarkCommand(const std::vector<std::string>& args);
 
-/// \brief `adsd view [PROBLEM.cfg] [--path FILE] --html OUT.html` (view_command.cpp): the browser viewer.
+/// \brief `adsd view [PROBLEM.cfg | ARM.cfg] [--path FILE] --html OUT.html` (view_command.cpp): the browser viewer.
 int viewCommand(const std::vector<std::string>& args);
 
 }  // namespace adsd::app

@@ -7,10 +7,9 @@
 // time, 2 bad input (one line naming the file, line and key).
 //
 // An arm problem (arm_planning_problem.h: a .cfg whose [problem] has a `request` key) is planned in
-// joint space with the same options, except --html (the viewer does not show arms yet): the
-// planner defaults to rrtconnect, the time to the request's allowed_planning_time, and the path
-// file has a "# joints: ..." header and one line of joint values per state.
-#include <cmath>
+// joint space with the same options: the planner defaults to rrtconnect, the time to the request's
+// allowed_planning_time, the path file has a "# joints: ..." header and one line of joint values
+// per state, and --html writes the arm's viewer page (arm_viewer_html.h).
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -33,6 +32,8 @@
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
+#include "arm_path_samples.h"
+#include "arm_viewer_html.h"
 #include "commands.h"
 #include "viewer_html.h"
 
@@ -223,16 +224,8 @@ void printSolveReport(const PlanArguments& a, const SolveReport& r) {
               static_cast<unsigned long long>(r.counts.clearanceQueries), 1e6 * r.counts.meanClearanceSeconds());
 }
 
-/// Spacing of the states at which an arm path's clearance is measured: joint-space distance (the
-/// sum of the joints' absolute changes, radians for turning joints), 0.01 rad, where a link 1 m
-/// from its joint's axis moves at most 1 cm.
-constexpr double kArmClearanceStep = 0.01;
-
 /// `adsd plan ARM.cfg`: an arm problem (arm_planning_problem.h).
 int planArm(const PlanArguments& a) {
-  if (a.htmlFile) {
-    throw cli::UsageError("--html: the browser viewer does not show arms yet ('" + a.problem + "' is an arm problem)");
-  }
   const MotionBenchMakerProblem file = readMotionBenchMakerProblem(a.problem);
   ArmPlanningProblem problem(file, checkingOptions(a));
   for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';
@@ -267,11 +260,8 @@ int planArm(const PlanArguments& a) {
   if (!r.solved) return 1;
 
   const ompl::geometric::PathGeometric& path = ss.getSolutionPath();
-  // The clearance at states kArmClearanceStep apart along the path (a copy), finer than the
-  // validity-checking resolution (1% of the joint space's extent, tenths of a radian).
-  ompl::geometric::PathGeometric dense(path);
-  dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / kArmClearanceStep)) + 1);
-  const PathMeasures measures = measurePath(dense, *problem.checker());
+  // The clearance at states kArmClearanceStep apart along the path (a copy).
+  const PathMeasures measures = measurePath(armClearanceSamples(path), *problem.checker());
   const auto& space = problem.spaceInformation()->getStateSpace();
   std::printf("path        %zu states, length %.6g (joint space: the sum of the joints' absolute changes)\n",
               path.getStateCount(), measures.length);
@@ -283,6 +273,10 @@ int planArm(const PlanArguments& a) {
     for (const std::size_t j : problem.model().activeJoints) joints.push_back(problem.model().joints[j].name);
     writeArmPathFile(*a.pathFile, path, static_cast<const ArmStateSpace&>(*space), joints);
     std::printf("path file   %s\n", a.pathFile->c_str());
+  }
+  if (a.htmlFile) {
+    writeArmViewerHtml(*a.htmlFile, problem, &path, "adsd plan, planner " + plannerName);
+    std::printf("viewer      %s\n", a.htmlFile->c_str());
   }
   return 0;
 }

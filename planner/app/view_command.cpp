@@ -1,12 +1,15 @@
-// `adsd view [PROBLEM.cfg] [--path FILE] --html OUT.html`
+// `adsd view [PROBLEM.cfg | ARM.cfg] [--path FILE] --html OUT.html`
 //
 // Writes the browser viewer (viewer_html.h) for a problem: its start and goal, or a path read from
 // a file as `adsd plan --path` writes it (one state a line: SE(2) x y yaw; SE(3) x y z qx qy qz qw),
-// which is also what OMPL's PathGeometric::printAsMatrix prints. Exit status: 0 written, 2 bad input.
+// which is also what OMPL's PathGeometric::printAsMatrix prints. An arm problem's page
+// (arm_viewer_html.h) takes an arm's path file: a "# joints: ..." header and one line of joint
+// values per state. Exit status: 0 written, 2 bad input.
 #include <cmath>
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -20,9 +23,12 @@
 
 #include "adsd/cli/command_line.h"
 #include "adsd/error.h"
+#include "adsd/planner/arm_planning_problem.h"
+#include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
+#include "arm_viewer_html.h"
 #include "commands.h"
 #include "viewer_html.h"
 
@@ -38,12 +44,13 @@ using namespace adsd::planner;
 /// about 1e-6; anything farther is not a rotation.
 constexpr double kQuaternionNormSlack = 1e-4;
 
-constexpr const char* kSynopsis = "adsd view [PROBLEM.cfg] [--path FILE] --html OUT.html";
+constexpr const char* kSynopsis = "adsd view [PROBLEM.cfg | ARM.cfg] [--path FILE] --html OUT.html";
 constexpr const char* kDescription =
     "Writes one self-contained HTML page (it opens offline) showing the problem's meshes, start and\n"
     "goal, and with --path the robot moving along the path: the closest points to the environment\n"
-    "at each state and the clearance along the path, its minimum marked. Without PROBLEM.cfg, the\n"
-    "default problem of `adsd plan`.";
+    "at each state and the clearance along the path, its minimum marked. An arm problem (ARM.cfg,\n"
+    "docs/problem-files.md) shows its links posed at each state, and the closest points of link and\n"
+    "obstacle or of two links. Without a problem file, the default problem of `adsd plan`.";
 constexpr const char* kDetails =
     "Exit status: 0 written, 2 bad input or usage (one line naming the file and line, or the option).\n";
 
@@ -57,7 +64,8 @@ struct ViewArguments {
 std::optional<ViewArguments> parseArguments(const std::vector<std::string>& args) {
   cli::CommandLine line("adsd view", kSynopsis, kDescription, kDetails);
   line.options()
-      ("path", cli::value("FILE"), "a path: one state a line, as `adsd plan --path` writes it")
+      ("path", cli::value("FILE"),
+       "a path: one state a line, as `adsd plan --path` writes it (for an arm, its joint values)")
       ("html", cli::value("OUT.html"), "the page to write (required)");
   line.positional("problem");
   const std::optional<cli::Arguments> given = line.parse(args);
@@ -76,23 +84,28 @@ std::optional<ViewArguments> parseArguments(const std::vector<std::string>& args
   return a;
 }
 
-/// Reads a path file into states of \p si's space; errors name the file and line.
-ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::SpaceInformationPtr& si,
-                                            RigidBodySpace space) {
+/// Calls \p onComment for each comment line of a path file (its text after '#') and \p onState
+/// for each state line (its numbers), each with "FILE:LINE: " to put before an error; blank lines
+/// are skipped. Throws when the file cannot be read, a word is not a finite number, or there is no
+/// state line.
+void readPathLines(const std::string& file,
+                   const std::function<void(const std::string& comment, const std::string& where)>& onComment,
+                   const std::function<void(const std::vector<double>& values, const std::string& where)>& onState) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(file + ": no such path file");
   if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file + ": is a directory or a device, not a path file");
   std::ifstream in(file);
   if (!in) throw InputError(file + ": cannot be opened for reading");
-  const std::size_t expected = space == RigidBodySpace::se2 ? 3 : 7;
-  const char* layout = space == RigidBodySpace::se2 ? "x y yaw" : "x y z qx qy qz qw";
-  ompl::geometric::PathGeometric path(si);
-  ob::ScopedState<> state(si->getStateSpace());
+  std::size_t states = 0;
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
     const std::string where = file + ":" + std::to_string(number) + ": ";
     const std::size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
+    if (first == std::string::npos) continue;
+    if (line[first] == '#') {
+      onComment(line.substr(first + 1), where);
+      continue;
+    }
     std::istringstream words(line);
     std::vector<double> values;
     std::string word;
@@ -102,6 +115,20 @@ ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::S
       if (!v) throw InputError(where + "'" + word + "' is not a finite number");
       values.push_back(*v);
     }
+    onState(values, where);
+    ++states;
+  }
+  if (states == 0) throw InputError(file + ": no states (only comments or blank lines)");
+}
+
+/// Reads a rigid body's path file into states of \p si's space; errors name the file and line.
+ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::SpaceInformationPtr& si,
+                                            RigidBodySpace space) {
+  const std::size_t expected = space == RigidBodySpace::se2 ? 3 : 7;
+  const char* layout = space == RigidBodySpace::se2 ? "x y yaw" : "x y z qx qy qz qw";
+  ompl::geometric::PathGeometric path(si);
+  ob::ScopedState<> state(si->getStateSpace());
+  const auto onState = [&](const std::vector<double>& values, const std::string& where) {
     if (values.size() != expected) {
       throw InputError(where + "expected " + std::to_string(expected) + " numbers (" + layout + ") for this " +
                        (space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)") + " problem, got " +
@@ -125,14 +152,78 @@ ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::S
       s->rotation().w = values[6] / norm;
     }
     path.append(state.get());
-  }
-  if (path.getStateCount() == 0) throw InputError(file + ": no states (only comments or blank lines)");
+  };
+  readPathLines(file, [](const std::string&, const std::string&) {}, onState);
   return path;
+}
+
+/// Reads an arm's path file, as `adsd plan ARM.cfg --path` writes it (path_report.h): an optional
+/// "# joints: NAME ..." line, which must name the model's movable joints in its order, and one
+/// line of joint values per state, each within its joint's limits (a continuous joint's value
+/// may be any angle). Errors name the file and line.
+ompl::geometric::PathGeometric readArmPathFile(const std::string& file, const ArmPlanningProblem& problem) {
+  const ArmModel& model = problem.model();
+  const ob::SpaceInformationPtr& si = problem.spaceInformation();
+  const auto& space = static_cast<const ArmStateSpace&>(*si->getStateSpace());
+  std::string names;
+  for (const std::size_t j : model.activeJoints) names += (names.empty() ? "" : " ") + model.joints[j].name;
+  const auto onComment = [&](const std::string& comment, const std::string& where) {
+    static const std::string kHeader = " joints:";
+    if (comment.compare(0, kHeader.size(), kHeader) != 0) return;
+    std::istringstream words(comment.substr(kHeader.size()));
+    std::string given, word;
+    while (words >> word) given += (given.empty() ? "" : " ") + word;
+    if (given != names) {
+      throw InputError(where + "the path's joints (" + given + ") are not those of robot '" + model.name + "' (" +
+                       names + ")");
+    }
+  };
+  ompl::geometric::PathGeometric path(si);
+  ob::ScopedState<> state(si->getStateSpace());
+  const auto onState = [&](const std::vector<double>& q, const std::string& where) {
+    if (q.size() != model.dof()) {
+      throw InputError(where + "expected " + std::to_string(model.dof()) + " joint values (" + names +
+                       ") for robot '" + model.name + "', got " + std::to_string(q.size()));
+    }
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const ArmJoint& joint = model.joints[model.activeJoints[i]];
+      if (joint.type != ArmJointType::continuous && (q[i] < joint.lower || q[i] > joint.upper)) {
+        std::ostringstream why;
+        why << where << "joint " << joint.name << " = " << q[i] << " is outside its limits [" << joint.lower << ", "
+            << joint.upper << "]";
+        throw InputError(why.str());
+      }
+    }
+    space.fromJoints(q.data(), state.get());
+    path.append(state.get());
+  };
+  readPathLines(file, onComment, onState);
+  return path;
+}
+
+/// `adsd view ARM.cfg`: the arm viewer (arm_viewer_html.h).
+int viewArm(const ViewArguments& a) {
+  const MotionBenchMakerProblem file = readMotionBenchMakerProblem(a.problem);
+  ArmPlanningProblem problem(file, CheckingOptions{});
+  for (const std::string& w : problem.warnings()) std::cerr << "adsd view: warning: " << w << '\n';
+  // As `adsd plan` does before solving: the space's validity-checking resolution.
+  problem.setup().setup();
+  std::optional<ompl::geometric::PathGeometric> path;
+  if (a.pathFile) path = readArmPathFile(*a.pathFile, problem);
+  const ViewerSummary s = writeArmViewerHtml(a.html, problem, path ? &*path : nullptr,
+                                             a.pathFile ? "path " + *a.pathFile : std::string("start and goal, no path"));
+  std::printf("problem     %s (arm %s, %zu joints, %s)\n", problem.name().c_str(), problem.model().name.c_str(),
+              problem.model().dof(), a.problem.c_str());
+  std::printf("clearance   min %.6g m (exact, over %zu states%s)\n", s.minClearance, s.states,
+              path ? ": the path interpolated as `adsd plan` measures it" : ": the start and the goal");
+  std::printf("viewer      %s (%.0f kB)\n", a.html.c_str(), static_cast<double>(s.bytes) / 1000.0);
+  return 0;
 }
 
 int view(const std::vector<std::string>& args) {
   const std::optional<ViewArguments> a = parseArguments(args);
   if (!a) return 0;
+  if (isArmProblemFile(a->problem)) return viewArm(*a);
   const ProblemFile file = readProblemFile(a->problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd view: warning: " << w << '\n';
   PlanningProblem problem(file, CheckingOptions{});

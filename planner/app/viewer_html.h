@@ -1,25 +1,18 @@
 #pragma once
 /// \file
-/// \brief The browser viewer: one self-contained HTML page showing a problem, a path along it, the
-/// closest points at every state and the clearance along the way (issue 18). Written by
-/// `adsd plan --html` and `adsd view`; the page template is viewer/viewer.html.
+/// \brief The browser viewer of a rigid-body problem: one self-contained HTML page showing a
+/// problem, a path along it, the closest points at every state and the clearance along the way
+/// (issue 18). Written by `adsd plan --html` and `adsd view`; the page is made by viewer_page.h.
 
-#include <cstddef>
 #include <string>
 
 #include <ompl/geometric/PathGeometric.h>
 
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
+#include "viewer_page.h"
 
 namespace adsd::app {
-
-/// \brief What writeViewerHtml() wrote.
-struct ViewerSummary {
-  std::size_t states = 0;       ///< states shown (the path at the validity-checking resolution)
-  double minClearance = 0.0;    ///< least of the checker's clearance over those states
-  std::size_t bytes = 0;        ///< size of the page
-};
 
 /// \brief Writes the viewer page for \p problem to \p file.
 ///

@@ -1,10 +1,12 @@
-// `adsd plan ARM.cfg` run as a user runs it (the built program, ADSD_PROGRAM), on the shipped arm
-// problems (problems/arm): it solves them with RRTConnect and either checker, the path file's
-// states lie within the joint limits, are valid by our checker and by FCL's, and the straight
-// joint-space motions between them are collision-free by an independent dense check (FCL's
-// checker at states 0.002 apart in joint space); bad arm problems stop with exit status 2
-// and one line naming the file and line, and write nothing. ArmPlanningProblem in process: start
-// joints from the scene's robot_state, unknown start joints warned of, the goal's threshold.
+// `adsd plan ARM.cfg` and `adsd view ARM.cfg` run as a user runs them (the built program,
+// ADSD_PROGRAM), on the shipped arm problems (problems/arm): plan solves them with RRTConnect and
+// either checker, the path file's states lie within the joint limits, are valid by our checker and
+// by FCL's, and the straight joint-space motions between them are collision-free by an independent
+// dense check (FCL's checker at states 0.002 apart in joint space); bad arm problems stop with exit
+// status 2 and one line naming the file and line, and write nothing. The viewer: `adsd view` of a
+// path file plan wrote prints plan's minimum clearance, and bad path files are refused alike.
+// ArmPlanningProblem in process: start joints from the scene's robot_state, unknown start joints
+// warned of, the goal's threshold.
 //
 // Needs the robots problems/data/fetch_robots.sh puts in ~/.cache/adsd/robots (or ${ADSD_ROBOTS});
 // every test is skipped with a message naming the script when they are missing.
@@ -63,9 +65,9 @@ struct PlanRun {
   std::string out, err;
 };
 
-/// Runs `adsd plan ARGS` with stdout and stderr into files of \p dir.
-PlanRun plan(const std::vector<std::string>& args, const fs::path& dir) {
-  std::string command = std::string("'") + ADSD_PROGRAM + "' plan";
+/// Runs `adsd COMMAND ARGS` with stdout and stderr into files of \p dir.
+PlanRun runAdsd(const std::string& subcommand, const std::vector<std::string>& args, const fs::path& dir) {
+  std::string command = std::string("'") + ADSD_PROGRAM + "' " + subcommand;
   for (const std::string& a : args) command += " '" + a + "'";
   command += " > '" + (dir / "stdout").string() + "' 2> '" + (dir / "stderr").string() + "'";
   const int raw = std::system(command.c_str());
@@ -75,6 +77,9 @@ PlanRun plan(const std::vector<std::string>& args, const fs::path& dir) {
   r.err = readAll(dir / "stderr");
   return r;
 }
+
+/// Runs `adsd plan ARGS`.
+PlanRun plan(const std::vector<std::string>& args, const fs::path& dir) { return runAdsd("plan", args, dir); }
 
 /// The path file: the header's joint names and the states.
 struct PathFile {
@@ -273,13 +278,88 @@ TEST(ArmPlanCommand, UnknownGoalJointNamesItsLine) {
                 "goal joint 'no_such_joint' is not a movable joint");
 }
 
-TEST(ArmPlanCommand, HtmlIsAUsageErrorForArms) {
+// ---- the viewer: `adsd plan ARM.cfg --html`, `adsd view ARM.cfg --path FILE` ----------------------
+// (tests/browser opens the pages in chromium; here, what the commands print and refuse.)
+
+/// The "clearance   min X" line's value as printed.
+std::string printedMin(const std::string& out) {
+  const auto at = out.find("clearance   min ");
+  if (at == std::string::npos) return "(no clearance line)";
+  const auto from = at + std::string("clearance   min ").size();
+  return out.substr(from, out.find(' ', from) - from);
+}
+
+TEST(ArmViewCommand, PageOfThePlannedPathShowsThePrintedClearance) {
   SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
   const fs::path dir = workDirectory();
-  const fs::path html = dir / "out.html";
-  const PlanRun r = plan({cfgOf("kr5_table_pick"), "--html", html.string()}, dir);
-  EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_NE(r.err.find("does not show arms yet"), std::string::npos) << r.err;
+  const fs::path pathFile = dir / "path.txt", planned = dir / "planned.html", viewed = dir / "viewed.html";
+  const PlanRun p = plan({cfgOf("kr5_table_pick"), "--seed", "1", "--path", pathFile.string(), "--html",
+                          planned.string()},
+                         dir);
+  ASSERT_EQ(p.status, 0) << p.out << p.err;
+  EXPECT_NE(p.out.find("viewer      " + planned.string()), std::string::npos) << p.out;
+  EXPECT_TRUE(fs::is_regular_file(planned));
+  const PlanRun v = runAdsd("view", {cfgOf("kr5_table_pick"), "--path", pathFile.string(), "--html", viewed.string()}, dir);
+  ASSERT_EQ(v.status, 0) << v.out << v.err;
+  // The path file holds every digit, and view samples it as plan measured it: the same minimum.
+  EXPECT_EQ(printedMin(v.out), printedMin(p.out)) << p.out << v.out;
+  EXPECT_TRUE(fs::is_regular_file(viewed));
+  // Without a path: the start and the goal.
+  const PlanRun ends = runAdsd("view", {cfgOf("kr5_table_pick"), "--html", viewed.string()}, dir);
+  ASSERT_EQ(ends.status, 0) << ends.err;
+  EXPECT_NE(ends.out.find("over 2 states: the start and the goal"), std::string::npos) << ends.out;
+}
+
+/// `adsd view kr5_table_pick --path` of a path file holding \p text: exit 2, one line naming
+/// \p where (after the file's name) and saying \p what, nothing on stdout, no page.
+void expectPathRefused(const std::string& text, const std::string& where, const std::string& what) {
+  const fs::path dir = workDirectory();
+  const fs::path pathFile = dir / "bad.txt", html = dir / "out.html";
+  std::ofstream(pathFile) << text;
+  const PlanRun r = runAdsd("view", {cfgOf("kr5_table_pick"), "--path", pathFile.string(), "--html", html.string()}, dir);
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("adsd view: error: " + pathFile.string() + where + ": " + what, 0), 0u) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(html));
+  EXPECT_FALSE(fs::exists(html.string() + ".partial"));
+}
+
+const std::string kKr5Header = "# joints: shoulder_yaw shoulder_pitch elbow_pitch elbow_roll wrist_pitch wrist_roll\n";
+
+TEST(ArmViewCommand, PathWithTooFewJointsNamesItsLine) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  expectPathRefused(kKr5Header + "0 -0.6 -1.2 0 0.5 0\n0 -0.6 -1.2 0 0.5\n", ":3",
+                    "expected 6 joint values (shoulder_yaw shoulder_pitch elbow_pitch elbow_roll wrist_pitch "
+                    "wrist_roll) for robot '");
+}
+
+TEST(ArmViewCommand, PathWithANonNumberNamesItsLine) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  expectPathRefused(kKr5Header + "0 -0.6 abc 0 0.5 0\n", ":2", "'abc' is not a finite number");
+  expectPathRefused("0 -0.6 -1.2 0 0.5 0\n\n0 -0.6 -1.2 nan 0.5 0\n", ":3", "'nan' is not a finite number");
+}
+
+TEST(ArmViewCommand, PathOutsideTheJointLimitsNamesItsLine) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  expectPathRefused(kKr5Header + "0 -0.6 -1.2 0 0.5 0\n3.5 -0.6 -1.2 0 0.5 0\n", ":3",
+                    "joint shoulder_yaw = 3.5 is outside its limits [-2.9671, 2.9671]");
+}
+
+TEST(ArmViewCommand, PathOfAnotherRobotNamesItsHeader) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  expectPathRefused("# joints: /j1 /j2 /j3 /j4 /j5 /j6 /j7\n0 0 0 0 0 0 0\n", ":1",
+                    "the path's joints (/j1 /j2 /j3 /j4 /j5 /j6 /j7) are not those of robot '");
+}
+
+TEST(ArmViewCommand, PathWithoutStatesOrFileIsNamed) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  expectPathRefused(kKr5Header + "\n", "", "no states (only comments or blank lines)");
+  const fs::path dir = workDirectory();
+  const fs::path missing = dir / "no_such.txt", html = dir / "out.html";
+  const PlanRun r = runAdsd("view", {cfgOf("kr5_table_pick"), "--path", missing.string(), "--html", html.string()}, dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "adsd view: error: " + missing.string() + ": no such path file\n");
   EXPECT_FALSE(fs::exists(html));
 }
 

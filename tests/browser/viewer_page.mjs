@@ -138,12 +138,14 @@ export async function countPixels(page) {
 }
 
 /**
- * The checks of issue 18 on one page: opens offline without errors, draws the scene, the robot
- * starts at the cfg's start and the slider's end puts it at the cfg's goal, the plot's minimum is
- * \p expectedMin (as printed, six significant digits), and the witness points are as far apart as
- * the clearance says. Leaves the robot at the minimum and saves a screenshot to \p screenshot.
+ * The checks every viewer page must pass (issues 18 and 17): opens offline without errors, draws
+ * the scene and the robot, the slider's End key shows the last state, Play moves along the path
+ * and Pause stops it, the plot's minimum is \p expectedMin (as printed, six significant digits),
+ * and the witness points are as far apart as the clearance says. \p atStart(page, state) checks
+ * the robot at state 0 and \p atEnd(page, state) at the last state. Leaves the robot at the
+ * minimum and saves a screenshot to \p screenshot.
  */
-export async function checkViewer(browser, { html, cfg, expectedMin, screenshot }) {
+export async function checkPage(browser, { html, expectedMin, screenshot, atStart, atEnd }) {
   const { page, errors, requests } = await openViewer(browser, html);
   try {
     const offline = requests.filter((u) => !/^(file|blob|data):/.test(u));
@@ -160,12 +162,11 @@ export async function checkViewer(browser, { html, cfg, expectedMin, screenshot 
     assert.ok(pixels.drawn > 0.02 * pixels.total, `only ${pixels.drawn} of ${pixels.total} pixels differ from the background`);
     assert.ok(pixels.robot > 20, `hiding the robot changes only ${pixels.robot} pixels`);
 
-    assertSamePose(state.start, cfgPose(cfg, 'start'), 'robot at state 0 vs the cfg start');
+    await atStart(page, state);
     // As a person would: the End key on the focused slider moves it to its last value.
     await page.locator('#slider').press('End');
-    const end = await page.evaluate(() => ({ index: adsdViewer.index, pose: adsdViewer.robotPose() }));
-    assert.equal(end.index, state.count - 1, 'the slider at its end shows the last state');
-    assertSamePose(end.pose, cfgPose(cfg, 'goal'), 'robot at the slider end vs the cfg goal');
+    assert.equal(await page.evaluate(() => adsdViewer.index), state.count - 1, 'the slider at its end shows the last state');
+    await atEnd(page, state);
 
     // Play from the start: the robot moves along the path by itself.
     if (state.count > 2) {
@@ -196,4 +197,80 @@ export async function checkViewer(browser, { html, cfg, expectedMin, screenshot 
   } finally {
     await page.close();
   }
+}
+
+/**
+ * checkPage() on a rigid robot's page: the robot at the cfg's start at state 0 and at its goal at
+ * the last state.
+ */
+export async function checkViewer(browser, { html, cfg, expectedMin, screenshot }) {
+  return checkPage(browser, {
+    html, expectedMin, screenshot,
+    atStart: async (page, state) => assertSamePose(state.start, cfgPose(cfg, 'start'), 'robot at state 0 vs the cfg start'),
+    atEnd: async (page) => assertSamePose(await page.evaluate(() => adsdViewer.robotPose()), cfgPose(cfg, 'goal'),
+                                          'robot at the slider end vs the cfg goal'),
+  });
+}
+
+/**
+ * An arm problem's request (MotionBenchMaker's request YAML, as problems/arm/make_arm_problems.py
+ * writes it), read here from the file itself: the start's joint positions by name, and each goal
+ * joint's position and tolerances.
+ */
+export function armRequest(cfgFile) {
+  const cfg = fs.readFileSync(cfgFile, 'utf8');
+  const request = /^\s*request\s*=\s*(.+?)\s*$/m.exec(cfg);
+  assert.ok(request, `${cfgFile}: no request key`);
+  const text = fs.readFileSync(path.resolve(path.dirname(cfgFile), request[1]), 'utf8');
+  const startState = /start_state:[\s\S]*?name:\s*\[([^\]]*)\][\s\S]*?position:\s*\[([^\]]*)\]/.exec(text);
+  assert.ok(startState, `${request[1]}: no start_state with name and position lists`);
+  const names = startState[1].split(',').map((n) => n.trim().replace(/^'|'$/g, ''));
+  const positions = startState[2].split(',').map(Number);
+  const start = Object.fromEntries(names.map((n, i) => [n, positions[i]]));
+  const goal = {};
+  const constraint = /joint_name:\s*'([^']*)'\s*\n\s*position:\s*(\S+)\s*\n\s*tolerance_above:\s*(\S+)\s*\n\s*tolerance_below:\s*(\S+)/g;
+  for (const m of text.matchAll(constraint)) goal[m[1]] = { position: Number(m[2]), tolerance: Math.min(Number(m[3]), Number(m[4])) };
+  return { start, goal };
+}
+
+/** The URDF an arm cfg names, ${ADSD_ROBOTS} expanded as adsd does (default ~/.cache/adsd/robots). */
+export function armRobotFile(cfgFile) {
+  const robot = /^\s*robot\s*=\s*(.+?)\s*$/m.exec(fs.readFileSync(cfgFile, 'utf8'));
+  assert.ok(robot, `${cfgFile}: no robot key`);
+  const robots = process.env.ADSD_ROBOTS ?? path.join(os.homedir(), '.cache', 'adsd', 'robots');
+  return path.resolve(path.dirname(cfgFile), robot[1].replace('${ADSD_ROBOTS}', robots));
+}
+
+/**
+ * checkPage() on an arm's page: at state 0 the joints are the request's start and every link is
+ * drawn where the start (green) arm is; at the last state the joints are within the goal's
+ * tolerance (the path ends within the smallest tolerance in the sum of the joints' changes) and
+ * every link's origin within 2 mm of the goal (blue) arm's (0.001 rad in all at most 2 m from the
+ * axes: these arms reach about 1 m).
+ */
+export async function checkArmViewer(browser, { html, cfg, expectedMin, screenshot }) {
+  const request = armRequest(cfg);
+  const drawn = (page, i) => page.evaluate((k) => ({
+    names: adsdViewer.jointNames, joints: adsdViewer.joints(k), links: adsdViewer.bodyPoses(),
+    start: adsdViewer.startPoses(), goal: adsdViewer.goalPoses(), bodies: adsdViewer.bodyNames,
+  }), i);
+  return checkPage(browser, {
+    html, expectedMin, screenshot,
+    atStart: async (page) => {
+      const s = await drawn(page, 0);
+      assert.ok(s.bodies.length > 1, `only ${s.bodies.length} link drawn`);
+      assert.deepEqual(s.joints, s.names.map((n) => request.start[n]), 'joints at state 0 vs the request start');
+      s.links.forEach((p, b) => assertSamePose(p, s.start[b], `link ${s.bodies[b]} at state 0 vs the start arm`));
+    },
+    atEnd: async (page, state) => {
+      const s = await drawn(page, state.count - 1);
+      const off = s.names.reduce((sum, n, j) => sum + Math.abs(s.joints[j] - request.goal[n].position), 0);
+      const tolerance = Math.min(...Object.values(request.goal).map((g) => g.tolerance));
+      assert.ok(off <= tolerance + 1e-12, `last state's joints ${s.joints} are ${off} from the goal (tolerance ${tolerance})`);
+      s.links.forEach((p, b) => {
+        const gap = Math.hypot(...p.position.map((v, k) => v - s.goal[b].position[k]));
+        assert.ok(gap <= 0.002, `link ${s.bodies[b]} at the last state is ${gap} m from the goal arm's`);
+      });
+    },
+  });
 }

@@ -1,19 +1,28 @@
-// The browser viewer in a real browser (issue 18): pages written by `adsd plan --html` and
-// `adsd view`, opened from file:// URLs by headless Debian chromium. Run by ctest (browser_viewer),
-// or by hand from the source folder after a build:
+// The browser viewer in a real browser (issues 18 and 17): pages written by `adsd plan --html` and
+// `adsd view`, for rigid robots and arms, opened from file:// URLs by headless Debian chromium. Run
+// by ctest (browser_viewer), or by hand from the source folder after a build:
 //   ADSD=build/planner/app/adsd ADSD_PROBLEMS=build/problem_files node --test tests/browser/viewer_test.mjs
+// The arm tests are skipped, naming problems/data/fetch_robots.sh, when the robots are not cached.
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 
-import { checkViewer, launchBrowser, outDir, printedMinClearance, problemsDir, run } from './viewer_page.mjs';
+import {
+  armRobotFile, checkArmViewer, checkViewer, launchBrowser, outDir, printedMinClearance, problemsDir, run,
+} from './viewer_page.mjs';
 
 let browser;
 before(async () => { browser = await launchBrowser(); });
 after(async () => { await browser?.close(); });
 
 const out = (name) => path.join(outDir, name);
+const here = path.dirname(new URL(import.meta.url).pathname);
+const armProblemsDir = process.env.ADSD_ARM_PROBLEMS ?? path.join(here, '..', '..', 'problems', 'arm');
+const armCfg = (name) => path.join(armProblemsDir, name, 'problem.cfg');
+/** The reason to skip an arm test, or false when its robot is cached. */
+const withoutRobot = (cfg) =>
+  !fs.existsSync(armRobotFile(cfg)) && `the robots are not cached: run problems/data/fetch_robots.sh (${armRobotFile(cfg)})`;
 
 test('office (SE(2)): adsd plan --html, checked in chromium; the README screenshot', async () => {
   const cfg = path.join(problemsDir, 'office.cfg');
@@ -67,4 +76,44 @@ test('adsd view refuses a bad path file with one line naming it, and writes noth
   const noHtml = run(['view', cfg]);
   assert.equal(noHtml.status, 2);
   assert.match(noHtml.stderr, /--html OUT.html is required/);
+});
+
+test('kr5_table_pick (arm): adsd plan --html, checked in chromium; the arm screenshot', { skip: withoutRobot(armCfg('kr5_table_pick')) }, async () => {
+  const cfg = armCfg('kr5_table_pick');
+  const html = out('kr5_table_pick.html');
+  fs.rmSync(html, { force: true });
+  const plan = run(['plan', cfg, '--seed', '1', '--html', html]);
+  assert.equal(plan.status, 0, plan.stderr);
+  assert.match(plan.stdout, /^viewer\s+\S*kr5_table_pick\.html$/m);
+  const state = await checkArmViewer(browser, {
+    html, cfg, expectedMin: printedMinClearance(plan.stdout), screenshot: out('viewer_kr5_table_pick.png') });
+  assert.ok(state.count > 2);
+  const bytes = fs.statSync(html).size;
+  console.log(`kr5_table_pick.html: ${bytes} bytes, ${state.count} states, min clearance ${state.plot.min}`);
+});
+
+test('wam_box (arm): adsd view of the path file adsd plan wrote', { skip: withoutRobot(armCfg('wam_box')) }, async () => {
+  const cfg = armCfg('wam_box');
+  const pathFile = out('wam_box.txt');
+  const html = out('wam_box.html');
+  fs.rmSync(html, { force: true });
+  const plan = run(['plan', cfg, '--seed', '1', '--path', pathFile]);
+  assert.equal(plan.status, 0, plan.stderr);
+  const view = run(['view', cfg, '--path', pathFile, '--html', html]);
+  assert.equal(view.status, 0, view.stderr);
+  // The path file holds every digit: the same states as adsd plan measured, so the same minimum.
+  assert.equal(printedMinClearance(view.stdout), printedMinClearance(plan.stdout));
+  const state = await checkArmViewer(browser, {
+    html, cfg, expectedMin: printedMinClearance(plan.stdout), screenshot: out('viewer_wam_box.png') });
+  const bytes = fs.statSync(html).size;
+  console.log(`wam_box.html: ${bytes} bytes, ${state.count} states, min clearance ${state.plot.min}`);
+});
+
+test('adsd view of an arm problem without a path shows its start and goal', { skip: withoutRobot(armCfg('kr5_shelf')) }, async () => {
+  const cfg = armCfg('kr5_shelf');
+  const html = out('kr5_shelf_problem.html');
+  const view = run(['view', cfg, '--html', html]);
+  assert.equal(view.status, 0, view.stderr);
+  const state = await checkArmViewer(browser, { html, cfg, expectedMin: printedMinClearance(view.stdout) });
+  assert.equal(state.count, 2);
 });
