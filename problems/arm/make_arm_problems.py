@@ -79,8 +79,10 @@ GOALS = {
     # Down into the bin.
     "kr5_box": (KR5_START, [0.03, 0.472, 0.761, 1.509, -0.243, 0.42]),
     "wam_box": (WAM_START, [0.016, 0.823, -0.023, 1.841, 1.067, 0.292, 0.298]),
-    # Through the slot: the KR5's forearm straight forward (the upper arm upright), the WAM's whole
-    # arm straight forward, turned about its own axis so that its upper arm's thin side is vertical.
+    # Through the slot: the KR5's forearm straight forward (the upper arm upright); the WAM's arm
+    # straight forward at the height of its shoulder, turned about its own axis so that its upper
+    # arm's thin side is vertical, the forearm and hand through the slot (the wall stands just
+    # beyond the upper arm, SLOT below).
     "kr5_slot": (KR5_START, [0.0, 0.1, -0.1, 0.0, 0.0, 0.0]),
     "wam_slot": (WAM_START, [0.0, 1.57, 1.57, 0.0, 0.0, 0.0, 0.0]),
     # Out of the cage between two bars and between the rings.
@@ -229,9 +231,9 @@ def cage(r):
     return s
 
 
-def slot(r, gap, slot_z):
+def slot(r, gap, slot_z, wall_x):
     s = Scene()
-    x, t, width, height = 0.5 * r, 0.03, 1.2 * r, 1.3 * r
+    x, t, width, height = wall_x * r, 0.03, 1.2 * r, 1.3 * r
     slot_w = 0.5 * r
     lower = slot_z - gap / 2
     upper_h = height - (slot_z + gap / 2)
@@ -256,10 +258,16 @@ FAMILIES = {
     "cage": ("twelve bars and two rings around the arm, a lamp above", cage),
     "slot": ("a wall with a narrow horizontal slot, a shelf behind it", None),
 }
-# The slot per robot (metres): its height, about 1.5 times the thickness of the link that passes
-# it, and the height of its middle, where that link lies when the arm reaches straight forward
-# (the KR5's forearm at 0.69 with the upper arm upright; the WAM's upper arm at the shoulder).
-SLOT = {"kr5": (0.22, 0.69), "wam": (0.26, 0.346)}
+# The slot per robot: its height (metres), about 1.5 times the thickness of the forearm that
+# passes it; the height of its middle (metres), where the forearm lies when the arm reaches
+# straight forward (the KR5's at 0.69 with the upper arm upright, the WAM's at its shoulder with
+# the upper arm straight forward); and the wall's distance from the first axis (in reaches).
+# The WAM's wall stands at 0.65, just beyond its upper arm (0.61 m from the shoulder with its
+# housing): at 0.5, as first written, the elbow would have to cross the wall, where the sphere it
+# moves on (0.55 m about the shoulder) meets the wall's plane at 0.2-0.26 m from the slot's
+# middle, at the slot's edges, with the upper arm's 10 cm housing around it; the goal lay in a
+# pocket no motion from the start reaches (problems/arm/README.md).
+SLOT = {"kr5": (0.22, 0.69, 0.5), "wam": (0.22, 0.346, 0.65)}
 
 
 # ------------------------------------------------------------------------------------- writing

@@ -345,6 +345,33 @@ TEST(ArmPlanningProblem, ZeroToleranceGetsTheFloor) {
   EXPECT_EQ(p.goalThreshold(), kArmGoalThresholdFloor);
 }
 
+// The slot problems are reached through the slot: start and goal valid (the constructor checks
+// them), the straight joint-space motion between them collides (dense states, 1/1000 of the
+// motion apart), and RRTConnect solves them (wam_slot was once unsolvable: problems/arm/README.md).
+TEST(ArmPlanningProblem, ShippedSlotsAreReachedThroughTheSlot) {
+  for (const char* name : {"kr5_slot", "wam_slot"}) {
+    SCOPED_TRACE(name);
+    SKIP_WITHOUT_ROBOTS(cfgOf(name));
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfgOf(name)), CheckingOptions{});
+    const auto& si = p.spaceInformation();
+    const auto& space = static_cast<const ArmStateSpace&>(*si->getStateSpace());
+    ompl::base::ScopedState<> start(si), goal(si), between(si);
+    space.fromJoints(p.startJoints().data(), start.get());
+    space.fromJoints(p.goalJoints().data(), goal.get());
+    int invalid = 0;
+    for (int k = 1; k < 1000; ++k) {
+      space.interpolate(start.get(), goal.get(), k / 1000.0, between.get());
+      if (!p.checker()->isValid(between.get())) ++invalid;
+    }
+    EXPECT_GT(invalid, 0) << "the direct motion is free";
+    // Solved in about a second (0.2-1.1 s on seeds 1-5); the limit only stops a failure.
+    const fs::path dir = workDirectory();
+    const PlanRun r = plan({cfgOf(name), "--time", "60", "--seed", "1", "--no-simplify"}, dir);
+    EXPECT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("solved      yes"), std::string::npos) << r.out;
+  }
+}
+
 TEST(ArmPlanCommand, ArmCfgIsRecognized) {
   EXPECT_TRUE(isArmProblemFile(cfgOf("kr5_table_pick")));
   EXPECT_FALSE(isArmProblemFile(kArmProblems + "/no_such_problem.cfg"));
