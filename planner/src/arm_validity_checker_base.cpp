@@ -164,13 +164,17 @@ bool ArmValidityCheckerBase::separatedAbove(const std::vector<Pose>& linkPoses, 
   return true;
 }
 
-double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, double cap) const {
+double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, double cap,
+                                            bool obstaclesOnly) const {
   if (!(cap > 0.0)) return 0.0;  // nothing asked for; 0 is a lower bound of every distance
   thread_local std::vector<PairBound> pairs;
   const double slack = broadPhase(linkPoses, cap, pairs);
+  const std::size_t n = linkOfBody_.size();
+  if (obstaclesOnly) {
+    pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [n](const PairBound& p) { return p.b < n; }), pairs.end());
+  }
   const auto fartherFirst = [](const PairBound& x, const PairBound& y) { return x.lower > y.lower; };
   std::make_heap(pairs.begin(), pairs.end(), fartherFirst);
-  const std::size_t n = linkOfBody_.size();
   double best = cap;  // a lower bound on the distance, valid for every pair visited or skipped
   while (!pairs.empty()) {
     std::pop_heap(pairs.begin(), pairs.end(), fartherFirst);
@@ -247,6 +251,11 @@ double ArmValidityCheckerBase::clearance(const ompl::base::State* state) const {
 double ArmValidityCheckerBase::clearanceUpTo(const ompl::base::State* state, double cap) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
   return distanceUpTo(posesFor(state), cap);
+}
+
+double ArmValidityCheckerBase::obstacleClearanceUpTo(const ompl::base::State* state, double cap) const {
+  ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
+  return distanceUpTo(posesFor(state), cap, true);
 }
 
 }  // namespace adsd::planner

@@ -51,6 +51,10 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// \brief A lower bound on clearance(state) that equals it when below \p cap and is at least
   /// min(clearance, cap) otherwise. Counted as a clearance query.
   double clearanceUpTo(const ompl::base::State* state, double cap) const;
+  /// \brief clearanceUpTo() over the links against the obstacles only (the link pairs left out):
+  /// what MoveIt calls the distance to collision. Infinity when there is no obstacle and \p cap is
+  /// infinite. Counted as a clearance query.
+  double obstacleClearanceUpTo(const ompl::base::State* state, double cap) const;
 
   /// \brief The weighted clearance the certified motion check needs (ArmMotionValidator):
   ///   min over checked pairs P with w_P > 0 of (distance_P - subtract) / w_P,
@@ -102,7 +106,8 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   const std::vector<Pose>& posesFor(const ompl::base::State* state) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
-  double distanceUpTo(const std::vector<Pose>& linkPoses, double cap) const;
+  /// The smallest distance over the checked pairs (the link pairs left out when \p obstaclesOnly).
+  double distanceUpTo(const std::vector<Pose>& linkPoses, double cap, bool obstaclesOnly = false) const;
 
   const ArmStateSpace* space_;
   double safetyMargin_;
