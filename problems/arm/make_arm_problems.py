@@ -9,7 +9,8 @@
 
 Scenes after MotionBenchMaker's families: table pick (a table with objects on it), shelf (a
 bookshelf with boards), box (an open box to reach into), cage (bars around the workspace) and slot
-(a wall with a narrow slot to reach through), sized for the two robots of Debian's dart-doc
+(a wall with a narrow slot to reach through); and ours, pillar (a pillar the shortest swing grazes,
+for clearance-optimal planning), sized for the two robots of Debian's dart-doc
 (problems/data/fetch_robots.sh): the KUKA KR5 sixx R650 (reach about 0.65 m) and the Barrett WAM
 (reach about 1 m). Our own geometry only (boxes, cylinders, spheres, and one triangle mesh each);
 the robots' URDFs are named through ${ADSD_ROBOTS}, never copied.
@@ -69,6 +70,7 @@ LIMITS = {
 # the arm checker.
 KR5_START = [0.0, -0.6, -1.2, 0.0, 0.5, 0.0]
 WAM_START = [0.0, -0.4, 0.0, 2.4, 0.0, 0.5, 0.0]
+WAM_PILLAR_START = [0.9, 0.7, 0.0, 1.5, 0.0, 0.6, 0.0]
 GOALS = {
     # The palm (KR5) or the last link (WAM) above the table's middle, between the objects.
     "kr5_table_pick": (KR5_START, [0.041, 0.43, 0.771, -0.413, 0.928, -1.457]),
@@ -85,6 +87,10 @@ GOALS = {
     # beyond the upper arm, SLOT below).
     "kr5_slot": (KR5_START, [0.0, 0.1, -0.1, 0.0, 0.0, 0.0]),
     "wam_slot": (WAM_START, [0.0, 1.57, 1.57, 0.0, 0.0, 0.0, 0.0]),
+    # Past the pillar: the WAM's arm reaching forward (elbow bent 1.5, hand 0.73 m from the first
+    # axis) swings from one side to the other; the straight motion (the first joint alone, the
+    # shortest) passes the hand 2 cm from the pillar, start and goal are 0.6 m from it.
+    "wam_pillar": (WAM_PILLAR_START, [-0.9, 0.7, 0.0, 1.5, 0.0, 0.6, 0.0]),
     # Out of the cage between two bars and between the rings.
     "kr5_cage": (KR5_START, [0.0, 1.2, -1.1, 0.0, 0.0, 0.0]),
     "wam_cage": (WAM_START, [0.0, 1.6, 1.57, 0.0, 0.0, 0.0, 0.0]),
@@ -251,12 +257,26 @@ def slot(r, gap, slot_z, wall_x):
     return s
 
 
+def pillar(r, distance):
+    """A pillar the arm's straight swing grazes (clearance-optimal planning: the shortest path passes
+    close, others keep away), a ball on it, a crate behind with a wedge on it."""
+    s = Scene()
+    radius, height = 0.04, 1.5 * r
+    s.add("pillar", Pose((distance, 0.0, 0.0)),
+          [(("cylinder", (height, radius)), Pose((0, 0, height / 2))), (("sphere", (0.06 * r,)), Pose((0, 0, height)))])
+    s.box("crate", (-0.9 * r, -0.9 * r, 0.1 * r), (0.3 * r, 0.3 * r, 0.2 * r), yaw(0.3))
+    s.add("wedge", Pose((-0.9 * r, -0.9 * r, 0.2 * r), yaw(0.3)),
+          meshes=[(wedge_mesh(0.12 * r, 0.08 * r, 0.06 * r), Pose())])
+    return s
+
+
 FAMILIES = {
     "table_pick": ("a table with a can, a bottle, a carton and a wedge on it", table_pick),
     "shelf": ("a bookshelf of four boards with books, a jar and a wedge", shelf),
     "box": ("an open bin on a stand, with a ball and a wedge inside", open_box),
     "cage": ("twelve bars and two rings around the arm, a lamp above", cage),
     "slot": ("a wall with a narrow horizontal slot, a shelf behind it", None),
+    "pillar": ("a pillar the straight swing grazes, a crate behind", None),
 }
 # The slot per robot: its height (metres), about 1.5 times the thickness of the forearm that
 # passes it; the height of its middle (metres), where the forearm lies when the arm reaches
@@ -362,9 +382,18 @@ def check_limits(name, robot, vector):
             sys.exit("make_arm_problems.py: %s: joint %s = %g is outside [%g, %g]" % (name, j, q, lo, hi))
 
 
+# The pillar's axis from the first joint's axis (metres): the hand's reach in the swing (0.73 m for
+# the WAM's pose above) plus 2 cm plus the pillar's radius.
+PILLAR = {"wam": 0.79}
+
+
 def build_scene(robot, family):
     r = ROBOTS[robot]["reach"]
-    return slot(r, *SLOT[robot]) if family == "slot" else FAMILIES[family][1](r)
+    if family == "slot":
+        return slot(r, *SLOT[robot])
+    if family == "pillar":
+        return pillar(r, PILLAR[robot])
+    return FAMILIES[family][1](r)
 
 
 def main():
