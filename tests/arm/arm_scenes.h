@@ -4,6 +4,7 @@
 /// boxes (a table slab, a 1 cm thin wall, a pillar, an overhead plate), placed in the KR5's
 /// base_link frame (z up) and moved into the world with it.
 
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -43,6 +44,24 @@ inline ArmScene kr5BoxScene() {
                                  placedBox(Vec3(0.08, 0.08, 0.6), Vec3(-0.4, -0.3, 0.3), base, "pillar"),
                                  placedBox(Vec3(0.3, 0.3, 0.01), Vec3(0.3, -0.3, 0.7), base, "plate"),
                              });
+}
+
+/// The KR5 among 40 posts (8 cm square, 0.8 m high) on a 0.2 m grid around its base, in its
+/// base_link frame: enough obstacle parts for the broad phase's box tree to have several levels.
+inline ArmScene kr5PostsScene() {
+  auto model = std::make_shared<const ArmModel>(readUrdf(kr5Urdf()));
+  std::vector<Pose> poses;
+  const std::vector<double> zero(model->dof(), 0.0);
+  forwardKinematics(*model, zero.data(), poses);
+  const Pose base = poses[model->linkIndex("base_link")];
+  std::vector<Mesh> posts;
+  for (int i = -3; i <= 3; ++i) {
+    for (int j = -3; j <= 3; ++j) {
+      if (std::abs(i) <= 1 && std::abs(j) <= 1) continue;  // the robot's own square
+      posts.push_back(placedBox(Vec3(0.08, 0.08, 0.8), Vec3(0.2 * i, 0.2 * j, 0.4), base, "post"));
+    }
+  }
+  return makeArmScene(model, posts);
 }
 
 }  // namespace adsd::planner::test
