@@ -31,31 +31,6 @@ namespace {
 
 namespace ob = ompl::base;
 
-/// The reference: the least exact distance from any link to any obstacle mesh (and, with
-/// \p links, between the enabled link pairs) at joint vector \p q, pair by pair.
-double bruteForceClearance(const ArmScene& scene, const double* q, bool links, DistanceScratch& scratch) {
-  const ArmModel& m = *scene.model;
-  std::vector<Pose> poses;
-  forwardKinematics(m, q, poses);
-  double least = std::numeric_limits<double>::infinity();
-  for (std::size_t l = 0; l < m.links.size(); ++l) {
-    if (!m.links[l].collision) continue;
-    for (const Mesh& obstacle : scene.environment) {
-      least = std::min(least, distance(*m.links[l].collision, poses[l], obstacle, Pose::Identity(),
-                                       DistanceOptions::exactDistance(), scratch)
-                                  .distance);
-    }
-  }
-  if (links) {
-    for (const auto& [a, b] : scene.selfPairs.enabledPairs()) {
-      least = std::min(least, distance(*m.links[a].collision, poses[a], *m.links[b].collision, poses[b],
-                                       DistanceOptions::exactDistance(), scratch)
-                                  .distance);
-    }
-  }
-  return least;
-}
-
 // Random KR5 motions among the four boxes (one a 1 cm wall), from valid states, of up to 0.6 rad
 // per joint (some pass through a box): the certified lower bound is never above the brute-force
 // clearance at 151 states along the motion, and, converged, it is within the tolerance of their
@@ -74,7 +49,6 @@ TEST(ArmMotionClearance, LowerBoundNeverAboveTheDenseBruteForceClearance) {
   std::uniform_real_distribution<double> step(-0.6, 0.6);
   ob::ScopedState<> a(si), b(si), x(si);
   std::vector<double> qa(model.dof()), qb(model.dof()), qx(model.dof()), dq(model.dof()), moved(model.links.size());
-  DistanceScratch scratch;
   constexpr int kDense = 150;  // the brute force costs about 6 ms a state
   int motions = 0, converged = 0, throughContact = 0;
   for (const ArmClearanceScope scope : {ArmClearanceScope::obstacles, ArmClearanceScope::obstaclesAndLinks}) {
@@ -82,10 +56,7 @@ TEST(ArmMotionClearance, LowerBoundNeverAboveTheDenseBruteForceClearance) {
     const ArmMotionClearance clearance(checker, scope);
     for (int i = 0; i < 12; ++i) {
       do {
-        for (std::size_t j = 0; j < model.dof(); ++j) {
-          const ArmJoint& joint = model.joints[model.activeJoints[j]];
-          qa[j] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
-        }
+        test::uniformJoints(model, rng, qa.data());
         space.fromJoints(qa.data(), a.get());
       } while (!checker->isValid(a.get()));
       for (std::size_t j = 0; j < model.dof(); ++j) qb[j] = qa[j] + step(rng);
@@ -96,7 +67,7 @@ TEST(ArmMotionClearance, LowerBoundNeverAboveTheDenseBruteForceClearance) {
       for (int k = 0; k <= kDense; ++k) {
         space.interpolate(a.get(), b.get(), static_cast<double>(k) / kDense, x.get());
         space.toJoints(x.get(), qx.data());
-        dense = std::min(dense, bruteForceClearance(scene, qx.data(), links, scratch));
+        dense = std::min(dense, test::bruteForceClearance(scene, qx.data(), links));
       }
       ++motions;
       SCOPED_TRACE("motion " + std::to_string(i) + (links ? ", links too" : ", obstacles"));
@@ -191,12 +162,11 @@ double rrtStarPathClearance(bool clearanceObjective) {
   if (status != ob::PlannerStatus::EXACT_SOLUTION) return 0.0;
   ompl::geometric::PathGeometric path = ss.getSolutionPath();
   path.interpolate(static_cast<unsigned>(std::ceil(path.length() / 0.005)) + 1);
-  DistanceScratch scratch;
   double least = std::numeric_limits<double>::infinity();
   std::vector<double> q(2);
   for (std::size_t i = 0; i < path.getStateCount(); ++i) {
     space.toJoints(path.getState(i), q.data());
-    least = std::min(least, bruteForceClearance(scene, q.data(), false, scratch));
+    least = std::min(least, test::bruteForceClearance(scene, q.data(), false));
   }
   return least;
 }
@@ -225,10 +195,7 @@ PairRange pairRange(const ArmModel& model, std::size_t a, std::size_t b, int sta
   std::vector<Pose> poses;
   DistanceScratch scratch;
   for (int s = 0; s < states; ++s) {
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      const ArmJoint& joint = model.joints[model.activeJoints[i]];
-      q[i] = std::uniform_real_distribution<double>(joint.lower, joint.upper)(rng);
-    }
+    test::uniformJoints(model, rng, q.data());
     forwardKinematics(model, q.data(), poses);
     values.push_back(distance(*model.links[a].collision, poses[a], *model.links[b].collision, poses[b],
                               DistanceOptions::exactDistance(), scratch)
