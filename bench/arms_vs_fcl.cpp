@@ -3,7 +3,7 @@
 /// checking per motion (issue 17's benchmark rows).
 ///
 ///   bench_arms [--problems DIR] [--only a,b] [--states N] [--motions M] [--step RADIANS] [--rounds R]
-///              [--seed S] [--summary-md FILE]
+///              [--seed S] [--summary-md FILE] [--validity-alone]
 ///
 /// For every arm problem (DIR/NAME/problem.cfg, MotionBenchMaker format; default: the shipped
 /// problems/arm), both checkers sit behind one broad phase and one list of disabled link pairs
@@ -21,7 +21,10 @@
 /// validator accepts must be accepted by the discrete one too (exit 3 otherwise: it found a
 /// colliding state on a motion proven free).
 ///
-/// Prints one row per problem and a Markdown table (--summary-md) with the medians.
+/// Prints one row per problem and a Markdown table (--summary-md) with the medians. With
+/// --validity-alone, the two validity checks are also timed by themselves (interleaved with each
+/// other only) before the four queries are timed together: the caches then hold what validity
+/// checks leave, not what the clearance queries do; the medians go on a line after the table.
 
 #include <algorithm>
 #include <cmath>
@@ -65,6 +68,7 @@ struct Options {
   int rounds = 3;
   std::uint64_t seed = 1717;
   std::string summaryMarkdown;
+  bool validityAlone = false;
 };
 
 /// What one problem measured (medians in microseconds).
@@ -73,6 +77,7 @@ struct ProblemRow {
   std::size_t dof = 0, links = 0, obstacles = 0, selfPairs = 0;
   double validShare = 0.0;
   double oursValid = 0, fclValid = 0, oursClear = 0, fclClear = 0;
+  double oursValidAlone = 0, fclValidAlone = 0;  // --validity-alone
   double discreteChecks = 0, certifiedQueries = 0;  // per motion (means)
   double discreteMicros = 0, certifiedMicros = 0;   // per motion (medians)
   std::size_t motionsAccepted[2] = {0, 0};          // discrete, certified
@@ -82,7 +87,7 @@ adsd::cli::CommandLine commandLine() {
   adsd::cli::CommandLine line(
       "bench_arms",
       "bench_arms [--problems DIR] [--only a,b] [--states N] [--motions M] [--step RADIANS] [--rounds R] [--seed S]\n"
-      "           [--summary-md FILE]",
+      "           [--summary-md FILE] [--validity-alone]",
       "Arm problems: our checker against FCL's per state (validity, clearance), certified against discrete motion "
       "checking per motion.",
       "Exit status: 0, 2 for a bad command line or a broken problem (the others are still measured), 3 when an answer disagrees with FCL's or a certified "
@@ -95,7 +100,8 @@ adsd::cli::CommandLine commandLine() {
       "step", adsd::cli::value("RADIANS"), "largest change of a joint along a motion (default 0.3)")(
       "rounds", adsd::cli::value("R"), "timed rounds (default 3)")(
       "seed", adsd::cli::value("S"), "seed of the draws (default 1717)")(
-      "summary-md", adsd::cli::value("FILE"), "also write the table as Markdown");
+      "summary-md", adsd::cli::value("FILE"), "also write the table as Markdown")(
+      "validity-alone", "also time the validity checks by themselves, not interleaved with the clearance queries");
   return line;
 }
 
@@ -120,6 +126,7 @@ Options optionsFrom(const adsd::cli::Arguments& given) {
   o.rounds = static_cast<int>(given.whole("rounds", 1, 1000).value_or(static_cast<std::uint64_t>(o.rounds)));
   o.seed = given.whole("seed").value_or(o.seed);
   o.summaryMarkdown = given.text("summary-md").value_or("");
+  o.validityAlone = given.has("validity-alone");
   return o;
 }
 
@@ -164,6 +171,12 @@ int runProblem(const std::string& cfg, const Options& o, ProblemRow& row) {
       {"ours clearance", [&](std::size_t i) { clearOurs[i] = ours.clearance(states[i]); }, {}, {}},
       {"fcl clearance", [&](std::size_t i) { clearFcl[i] = fcl.clearance(states[i]); }, {}, {}},
   };
+  if (o.validityAlone) {
+    std::vector<adsd::bench::TimedMethod> validity(methods.begin(), methods.begin() + 2);
+    adsd::bench::runInterleaved(validity, states.size(), o.rounds);
+    row.oursValidAlone = adsd::bench::median(validity[0].micros);
+    row.fclValidAlone = adsd::bench::median(validity[1].micros);
+  }
   adsd::bench::runInterleaved(methods, states.size(), o.rounds);
   row.oursValid = adsd::bench::median(methods[0].micros);
   row.fclValid = adsd::bench::median(methods[1].micros);
@@ -267,6 +280,15 @@ std::string markdownTable(const std::vector<ProblemRow>& rows, const Options& o)
                   static_cast<unsigned long long>(o.seed));
     out += line;
   }
+  if (o.validityAlone && !rows.empty()) {
+    std::vector<double> alone;
+    for (const ProblemRow& r : rows) alone.push_back(r.oursValidAlone / r.fclValidAlone);
+    std::snprintf(line, sizeof line,
+                  "Validity timed alone (not interleaved with the clearance queries), ours ÷ FCL: median %.2f (worst "
+                  "%.2f).\n",
+                  adsd::bench::median(alone), *std::max_element(alone.begin(), alone.end()));
+    out += line;
+  }
   return out;
 }
 
@@ -302,6 +324,10 @@ int run(const Options& o) {
                 row.name.c_str(), row.dof, 100.0 * row.validShare, row.oursValid, row.fclValid, row.oursValid / row.fclValid,
                 row.oursClear, row.fclClear, row.oursClear / row.fclClear, row.discreteChecks, row.certifiedQueries,
                 row.discreteMicros, row.certifiedMicros);
+    if (o.validityAlone) {
+      std::printf("%-18s validity alone %7.1f / %7.1f = %.2f\n", "", row.oursValidAlone, row.fclValidAlone,
+                  row.oursValidAlone / row.fclValidAlone);
+    }
     std::fflush(stdout);
   }
   const std::string table = markdownTable(rows, o);

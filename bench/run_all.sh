@@ -28,7 +28,8 @@
 #                         uniform planning states, in collision) on every rigid scene and two more
 #                         real pairs; bench/plot_bands.py: time against error per band
 #   arms.txt, arms.md     bench_arms: the arm problems (problems/arm), our checker against FCL's per
-#                         state (validity, clearance) and certified against discrete motion checks
+#                         state (validity, clearance; validity timed alone too) and certified against
+#                         discrete motion checks
 #   profile_modes.md      bench/profile_modes.py: where exact and 1 % tolerance queries spend their
 #                         time, per stage of the traversal (perf; skipped when perf cannot sample)
 #   scene_counters.txt    bench_scene_counters: the planning problems' work per query (node pairs,
@@ -150,13 +151,13 @@ paste_results() {
   fi
   if [[ -f bench/results/arms.md ]]; then
     /usr/bin/python3 bench/paste_results.py "$page" arms \
-      "$build/bench/bench_arms --summary-md bench/results/arms.md" bench/results/arms.md
+      "$build/bench/bench_arms --validity-alone --summary-md bench/results/arms.md" bench/results/arms.md
     # The README's: the medians' line alone (the page has the table).
     local arms
     arms=$(mktemp --suffix=.md)
     grep '^Median' bench/results/arms.md >"$arms"
     /usr/bin/python3 bench/paste_results.py README.md headline_arms \
-      "$build/bench/bench_arms --summary-md bench/results/arms.md (its last line)" "$arms"
+      "$build/bench/bench_arms --validity-alone --summary-md bench/results/arms.md (its Median line)" "$arms"
     rm -f "$arms"
   fi
   # The README's headline: a few scenes' main ratios, cut from ratios.md (first table only).
@@ -219,7 +220,7 @@ step ratios sh -c "/usr/bin/python3 bench/ratio_summary.py '$staging/scenes.csv'
 step bands sh -c "'$build/bench/bench_bands' $(bands_options) --csv '$staging/bands.csv' \
   --summary-md '$staging/bands_summary.md' > '$staging/bands.txt'"
 step bands_plot /usr/bin/python3 bench/plot_bands.py "$staging/bands.csv" "$staging/bands.png"
-step arms sh -c "'$build/bench/bench_arms' --summary-md '$staging/arms.md' > '$staging/arms.txt'"
+step arms sh -c "'$build/bench/bench_arms' --validity-alone --summary-md '$staging/arms.md' > '$staging/arms.txt'"
 step scene_counters sh -c "'$build/bench/bench_scene_counters' --repeat 20 > '$staging/scene_counters.txt'"
 step checker_calls sh -c "'$build/bench/bench_checker_calls' $(checker_call_problems "$build") > '$staging/checker_calls.txt'"
 for from in rrtconnect prm; do

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include <ompl/base/goals/GoalState.h>
-#include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 
 #include "adsd/error.h"
@@ -163,7 +162,9 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     si->setMotionValidator(certified_);
   }
   if (objective_ == ObjectiveKind::maxMinClearance) {
-    setup_->setOptimizationObjective(std::make_shared<ob::MaximizeMinClearanceObjective>(si));
+    // The certified smallest clearance to the obstacles along each motion (arm_clearance_objective.h).
+    objectiveClearance_ = std::make_shared<const ArmMotionClearance>(checker_, ArmClearanceScope::obstacles);
+    setup_->setOptimizationObjective(std::make_shared<ArmClearanceObjective>(si, objectiveClearance_));
   } else {
     setup_->setOptimizationObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si));
   }

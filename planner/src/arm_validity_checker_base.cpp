@@ -24,6 +24,10 @@ ArmScratch& threadScratch() {
   return scratch;
 }
 
+/// Obstacle parts per leaf of the broad phase's box tree: a leaf's parts are tested one by one,
+/// about as cheap as testing two more nodes.
+constexpr std::uint32_t kObstacleLeafParts = 4;
+
 /// Gap between two boxes given by centre and half extents (0 when they overlap), squared.
 double boxGap2(const Vec3& c1, const Vec3& h1, const Vec3& c2, const Vec3& h2) {
   const Vec3 gap = ((c1 - c2).cwiseAbs() - h1 - h2).cwiseMax(0.0);
@@ -86,6 +90,35 @@ ArmValidityCheckerBase::ArmValidityCheckerBase(const ompl::base::SpaceInformatio
     box.extend(part.bounds());
   }
   scale_ = box.diagonal().norm();
+  obstacleOrder_.resize(obstacleCentres_.size());
+  for (std::uint32_t e = 0; e < obstacleOrder_.size(); ++e) obstacleOrder_[e] = e;
+  if (!obstacleOrder_.empty()) buildObstacleTree(0, static_cast<std::uint32_t>(obstacleOrder_.size()));
+}
+
+std::int32_t ArmValidityCheckerBase::buildObstacleTree(std::uint32_t first, std::uint32_t count) {
+  Eigen::AlignedBox3d box, centres;
+  for (std::uint32_t k = first; k < first + count; ++k) {
+    const std::uint32_t e = obstacleOrder_[k];
+    box.extend(obstacleCentres_[e] - obstacleHalves_[e]);
+    box.extend(obstacleCentres_[e] + obstacleHalves_[e]);
+    centres.extend(obstacleCentres_[e]);
+  }
+  const auto node = static_cast<std::int32_t>(obstacleTree_.size());
+  obstacleTree_.push_back({box.center(), 0.5 * box.sizes(), first, count, -1, -1});
+  if (count <= kObstacleLeafParts) return node;
+  // Split at the median centre along the axis where the centres spread most.
+  Vec3::Index axis = 0;
+  centres.sizes().maxCoeff(&axis);
+  const std::uint32_t half = count / 2;
+  std::nth_element(obstacleOrder_.begin() + first, obstacleOrder_.begin() + first + half,
+                   obstacleOrder_.begin() + first + count, [&](std::uint32_t x, std::uint32_t y) {
+                     return obstacleCentres_[x][axis] < obstacleCentres_[y][axis];
+                   });
+  const std::int32_t left = buildObstacleTree(first, half);
+  const std::int32_t right = buildObstacleTree(first + half, count - half);
+  obstacleTree_[static_cast<std::size_t>(node)].left = left;
+  obstacleTree_[static_cast<std::size_t>(node)].right = right;
+  return node;
 }
 
 const Mesh& ArmValidityCheckerBase::bodyMesh(std::size_t b) const {
@@ -126,15 +159,29 @@ double ArmValidityCheckerBase::broadPhase(const std::vector<Pose>& linkPoses, do
     boxCentre[b] = pose * linkBoxes_[b].center();
     boxHalf[b] = pose.linear().cwiseAbs() * (0.5 * linkBoxes_[b].sizes());
   }
-  // Link × obstacle: the box gap first (cheap), the ball gap only for the pairs it keeps.
-  for (std::size_t b = 0; b < n; ++b) {
+  // Link × obstacle: down the parts' box tree while the link's box can reach a node's; at a leaf,
+  // the box gap first (cheap), the ball gap only for the pairs it keeps.
+  for (std::size_t b = 0; b < n && !obstacleTree_.empty(); ++b) {
     const double ballReach = reach + ballRadii_[b];
-    for (std::size_t e = 0; e < obstacleCentres_.size(); ++e) {
-      const double box2 = boxGap2(boxCentre[b], boxHalf[b], obstacleCentres_[e], obstacleHalves_[e]);
-      if (box2 > reach2) continue;
-      const double ball2 = boxGap2(ball[b], Vec3::Zero(), obstacleCentres_[e], obstacleHalves_[e]);
-      if (ball2 > ballReach * ballReach) continue;
-      pairs.push_back({std::max({0.0, std::sqrt(ball2) - ballRadii_[b], std::sqrt(box2)}), b, n + e});
+    std::int32_t stack[64];  // median splits: depth <= log2(parts) + 1
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const ObstacleNode& node = obstacleTree_[static_cast<std::size_t>(stack[--top])];
+      if (boxGap2(boxCentre[b], boxHalf[b], node.centre, node.half) > reach2) continue;
+      if (node.left >= 0) {
+        stack[top++] = node.left;
+        stack[top++] = node.right;
+        continue;
+      }
+      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+        const std::size_t e = obstacleOrder_[k];
+        const double box2 = boxGap2(boxCentre[b], boxHalf[b], obstacleCentres_[e], obstacleHalves_[e]);
+        if (box2 > reach2) continue;
+        const double ball2 = boxGap2(ball[b], Vec3::Zero(), obstacleCentres_[e], obstacleHalves_[e]);
+        if (ball2 > ballReach * ballReach) continue;
+        pairs.push_back({std::max({0.0, std::sqrt(ball2) - ballRadii_[b], std::sqrt(box2)}), b, n + e});
+      }
     }
   }
   // Link × link, the enabled pairs: ball–ball and box–box gaps.
@@ -164,13 +211,17 @@ bool ArmValidityCheckerBase::separatedAbove(const std::vector<Pose>& linkPoses, 
   return true;
 }
 
-double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, double cap) const {
+double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, double cap,
+                                            bool obstaclesOnly) const {
   if (!(cap > 0.0)) return 0.0;  // nothing asked for; 0 is a lower bound of every distance
   thread_local std::vector<PairBound> pairs;
   const double slack = broadPhase(linkPoses, cap, pairs);
+  const std::size_t n = linkOfBody_.size();
+  if (obstaclesOnly) {
+    pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [n](const PairBound& p) { return p.b < n; }), pairs.end());
+  }
   const auto fartherFirst = [](const PairBound& x, const PairBound& y) { return x.lower > y.lower; };
   std::make_heap(pairs.begin(), pairs.end(), fartherFirst);
-  const std::size_t n = linkOfBody_.size();
   double best = cap;  // a lower bound on the distance, valid for every pair visited or skipped
   while (!pairs.empty()) {
     std::pop_heap(pairs.begin(), pairs.end(), fartherFirst);
@@ -247,6 +298,11 @@ double ArmValidityCheckerBase::clearance(const ompl::base::State* state) const {
 double ArmValidityCheckerBase::clearanceUpTo(const ompl::base::State* state, double cap) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
   return distanceUpTo(posesFor(state), cap);
+}
+
+double ArmValidityCheckerBase::obstacleClearanceUpTo(const ompl::base::State* state, double cap) const {
+  ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
+  return distanceUpTo(posesFor(state), cap, true);
 }
 
 }  // namespace adsd::planner

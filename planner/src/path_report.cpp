@@ -1,6 +1,7 @@
 #include "adsd/planner/path_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +36,27 @@ PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ob::S
   } else {
     m.meanClearance = sum / static_cast<double>(m.statesSampled);
   }
+  return m;
+}
+
+ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& path,
+                                         const ArmMotionClearance& clearance, double step) {
+  ArmPathClearance m;
+  m.min = m.certifiedMin = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i) {
+    m.certifiedMin = std::min(m.certifiedMin, clearance.along(path.getState(i), path.getState(i + 1)).lower);
+  }
+  ompl::geometric::PathGeometric dense(path);
+  dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / step)) + 1);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < dense.getStateCount(); ++i) {
+    const double c = clearance.at(dense.getState(i));
+    m.min = std::min(m.min, c);
+    sum += c;
+  }
+  m.statesSampled = dense.getStateCount();
+  if (m.statesSampled > 0) m.mean = sum / static_cast<double>(m.statesSampled);
+  if (path.getStateCount() < 2) m.certifiedMin = m.min;
   return m;
 }
 

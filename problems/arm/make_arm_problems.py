@@ -9,7 +9,8 @@
 
 Scenes after MotionBenchMaker's families: table pick (a table with objects on it), shelf (a
 bookshelf with boards), box (an open box to reach into), cage (bars around the workspace) and slot
-(a wall with a narrow slot to reach through), sized for the two robots of Debian's dart-doc
+(a wall with a narrow slot to reach through); and ours, pillar (a pillar the shortest swing grazes,
+for clearance-optimal planning), sized for the two robots of Debian's dart-doc
 (problems/data/fetch_robots.sh): the KUKA KR5 sixx R650 (reach about 0.65 m) and the Barrett WAM
 (reach about 1 m). Our own geometry only (boxes, cylinders, spheres, and one triangle mesh each);
 the robots' URDFs are named through ${ADSD_ROBOTS}, never copied.
@@ -69,6 +70,7 @@ LIMITS = {
 # the arm checker.
 KR5_START = [0.0, -0.6, -1.2, 0.0, 0.5, 0.0]
 WAM_START = [0.0, -0.4, 0.0, 2.4, 0.0, 0.5, 0.0]
+WAM_PILLAR_START = [0.9, 0.7, 0.0, 1.5, 0.0, 0.6, 0.0]
 GOALS = {
     # The palm (KR5) or the last link (WAM) above the table's middle, between the objects.
     "kr5_table_pick": (KR5_START, [0.041, 0.43, 0.771, -0.413, 0.928, -1.457]),
@@ -79,10 +81,16 @@ GOALS = {
     # Down into the bin.
     "kr5_box": (KR5_START, [0.03, 0.472, 0.761, 1.509, -0.243, 0.42]),
     "wam_box": (WAM_START, [0.016, 0.823, -0.023, 1.841, 1.067, 0.292, 0.298]),
-    # Through the slot: the KR5's forearm straight forward (the upper arm upright), the WAM's whole
-    # arm straight forward, turned about its own axis so that its upper arm's thin side is vertical.
+    # Through the slot: the KR5's forearm straight forward (the upper arm upright); the WAM's arm
+    # straight forward at the height of its shoulder, turned about its own axis so that its upper
+    # arm's thin side is vertical, the forearm and hand through the slot (the wall stands just
+    # beyond the upper arm, SLOT below).
     "kr5_slot": (KR5_START, [0.0, 0.1, -0.1, 0.0, 0.0, 0.0]),
     "wam_slot": (WAM_START, [0.0, 1.57, 1.57, 0.0, 0.0, 0.0, 0.0]),
+    # Past the pillar: the WAM's arm reaching forward (elbow bent 1.5, hand 0.73 m from the first
+    # axis) swings from one side to the other; the straight motion (the first joint alone, the
+    # shortest) passes the hand 2 cm from the pillar, start and goal are 0.6 m from it.
+    "wam_pillar": (WAM_PILLAR_START, [-0.9, 0.7, 0.0, 1.5, 0.0, 0.6, 0.0]),
     # Out of the cage between two bars and between the rings.
     "kr5_cage": (KR5_START, [0.0, 1.2, -1.1, 0.0, 0.0, 0.0]),
     "wam_cage": (WAM_START, [0.0, 1.6, 1.57, 0.0, 0.0, 0.0, 0.0]),
@@ -229,9 +237,9 @@ def cage(r):
     return s
 
 
-def slot(r, gap, slot_z):
+def slot(r, gap, slot_z, wall_x):
     s = Scene()
-    x, t, width, height = 0.5 * r, 0.03, 1.2 * r, 1.3 * r
+    x, t, width, height = wall_x * r, 0.03, 1.2 * r, 1.3 * r
     slot_w = 0.5 * r
     lower = slot_z - gap / 2
     upper_h = height - (slot_z + gap / 2)
@@ -249,17 +257,37 @@ def slot(r, gap, slot_z):
     return s
 
 
+def pillar(r, distance):
+    """A pillar the arm's straight swing grazes (clearance-optimal planning: the shortest path passes
+    close, others keep away), a ball on it, a crate behind with a wedge on it."""
+    s = Scene()
+    radius, height = 0.04, 1.5 * r
+    s.add("pillar", Pose((distance, 0.0, 0.0)),
+          [(("cylinder", (height, radius)), Pose((0, 0, height / 2))), (("sphere", (0.06 * r,)), Pose((0, 0, height)))])
+    s.box("crate", (-0.9 * r, -0.9 * r, 0.1 * r), (0.3 * r, 0.3 * r, 0.2 * r), yaw(0.3))
+    s.add("wedge", Pose((-0.9 * r, -0.9 * r, 0.2 * r), yaw(0.3)),
+          meshes=[(wedge_mesh(0.12 * r, 0.08 * r, 0.06 * r), Pose())])
+    return s
+
+
 FAMILIES = {
     "table_pick": ("a table with a can, a bottle, a carton and a wedge on it", table_pick),
     "shelf": ("a bookshelf of four boards with books, a jar and a wedge", shelf),
     "box": ("an open bin on a stand, with a ball and a wedge inside", open_box),
     "cage": ("twelve bars and two rings around the arm, a lamp above", cage),
     "slot": ("a wall with a narrow horizontal slot, a shelf behind it", None),
+    "pillar": ("a pillar the straight swing grazes, a crate behind", None),
 }
-# The slot per robot (metres): its height, about 1.5 times the thickness of the link that passes
-# it, and the height of its middle, where that link lies when the arm reaches straight forward
-# (the KR5's forearm at 0.69 with the upper arm upright; the WAM's upper arm at the shoulder).
-SLOT = {"kr5": (0.22, 0.69), "wam": (0.26, 0.346)}
+# The slot per robot: its height (metres), about 1.5 times the thickness of the forearm that
+# passes it; the height of its middle (metres), where the forearm lies when the arm reaches
+# straight forward (the KR5's at 0.69 with the upper arm upright, the WAM's at its shoulder with
+# the upper arm straight forward); and the wall's distance from the first axis (in reaches).
+# The WAM's wall stands at 0.65, just beyond its upper arm (0.61 m from the shoulder with its
+# housing): at 0.5, as first written, the elbow would have to cross the wall, where the sphere it
+# moves on (0.55 m about the shoulder) meets the wall's plane at 0.2-0.26 m from the slot's
+# middle, at the slot's edges, with the upper arm's 10 cm housing around it; the goal lay in a
+# pocket no motion from the start reaches (problems/arm/README.md).
+SLOT = {"kr5": (0.22, 0.69, 0.5), "wam": (0.22, 0.346, 0.65)}
 
 
 # ------------------------------------------------------------------------------------- writing
@@ -354,9 +382,18 @@ def check_limits(name, robot, vector):
             sys.exit("make_arm_problems.py: %s: joint %s = %g is outside [%g, %g]" % (name, j, q, lo, hi))
 
 
+# The pillar's axis from the first joint's axis (metres): the hand's reach in the swing (0.73 m for
+# the WAM's pose above) plus 2 cm plus the pillar's radius.
+PILLAR = {"wam": 0.79}
+
+
 def build_scene(robot, family):
     r = ROBOTS[robot]["reach"]
-    return slot(r, *SLOT[robot]) if family == "slot" else FAMILIES[family][1](r)
+    if family == "slot":
+        return slot(r, *SLOT[robot])
+    if family == "pillar":
+        return pillar(r, PILLAR[robot])
+    return FAMILIES[family][1](r)
 
 
 def main():

@@ -12,6 +12,7 @@
 
 #include <ompl/geometric/SimpleSetup.h>
 
+#include "adsd/planner/arm_clearance_objective.h"
 #include "adsd/planner/arm_motion_validator.h"
 #include "adsd/planner/arm_scene.h"
 #include "adsd/planner/arm_validity_checker_base.h"
@@ -67,6 +68,9 @@ class ArmPlanningProblem {
   /// \brief The request's `allowed_planning_time` (seconds), when it has one.
   const std::optional<double>& allowedPlanningTime() const { return allowedPlanningTime_; }
   ObjectiveKind objective() const { return objective_; }
+  /// \brief With the clearance objective, what it measures (ArmClearanceObjective, the clearance
+  /// to the obstacles); null with the length objective.
+  const std::shared_ptr<const ArmMotionClearance>& objectiveClearance() const { return objectiveClearance_; }
   const CheckingOptions& options() const { return options_; }
   /// \brief One line each: the cfg's unknown keys, start joints the model lacks.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -80,6 +84,7 @@ class ArmPlanningProblem {
   std::shared_ptr<ompl::geometric::SimpleSetup> setup_;
   std::shared_ptr<ArmValidityCheckerBase> checker_;
   std::shared_ptr<ArmMotionValidator> certified_;
+  std::shared_ptr<const ArmMotionClearance> objectiveClearance_;
   std::vector<double> start_, goal_;
   double goalThreshold_ = kArmGoalThresholdFloor;
   std::optional<double> allowedPlanningTime_;

@@ -5,6 +5,7 @@
 /// and the counters.
 
 #include <array>
+#include <cstdint>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -31,7 +32,9 @@ namespace adsd::planner {
 /// frame, each obstacle part a box in the world frame. A pair's lower bound is the larger of its
 /// ball and box gaps (for link × link: ball–ball and box–box; the posed box is the world box
 /// around the link box). Pairs whose bound exceeds the current bound (margin, or best distance so
-/// far) by more than roundoff are skipped; the rest are visited nearest first.
+/// far) by more than roundoff are skipped; the rest are visited nearest first. The obstacle parts'
+/// boxes sit in a tree (median splits, a few parts per leaf), so a link meets only the parts its
+/// box can reach: on a cage of 146 bars, testing every part took a third of a validity check.
 ///
 /// Bodies: the narrow phase sees body indices, links with geometry first (body b < linkBodies(),
 /// link linkOfBody(b)), then the obstacle parts.
@@ -51,6 +54,10 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// \brief A lower bound on clearance(state) that equals it when below \p cap and is at least
   /// min(clearance, cap) otherwise. Counted as a clearance query.
   double clearanceUpTo(const ompl::base::State* state, double cap) const;
+  /// \brief clearanceUpTo() over the links against the obstacles only (the link pairs left out):
+  /// what MoveIt calls the distance to collision. Infinity when there is no obstacle and \p cap is
+  /// infinite. Counted as a clearance query.
+  double obstacleClearanceUpTo(const ompl::base::State* state, double cap) const;
 
   /// \brief The weighted clearance the certified motion check needs (ArmMotionValidator):
   ///   min over checked pairs P with w_P > 0 of (distance_P - subtract) / w_P,
@@ -102,7 +109,8 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   const std::vector<Pose>& posesFor(const ompl::base::State* state) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
-  double distanceUpTo(const std::vector<Pose>& linkPoses, double cap) const;
+  /// The smallest distance over the checked pairs (the link pairs left out when \p obstaclesOnly).
+  double distanceUpTo(const std::vector<Pose>& linkPoses, double cap, bool obstaclesOnly = false) const;
 
   const ArmStateSpace* space_;
   double safetyMargin_;
@@ -114,6 +122,16 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   std::vector<std::pair<std::size_t, std::size_t>> selfPairs_;  ///< link bodies, enabled pairs
   std::vector<std::size_t> selfPairIndex_;  ///< link bodies a x b -> index into selfPairs_
   std::vector<Vec3> obstacleCentres_, obstacleHalves_;  ///< world frame, per obstacle part
+  /// A node of the obstacle parts' box tree: its box (centre, half extents, world frame), and
+  /// either two children or, for a leaf, parts obstacleOrder_[first, first + count).
+  struct ObstacleNode {
+    Vec3 centre, half;
+    std::uint32_t first = 0, count = 0;
+    std::int32_t left = -1, right = -1;
+  };
+  std::vector<ObstacleNode> obstacleTree_;  ///< root first; empty without obstacles
+  std::vector<std::uint32_t> obstacleOrder_;  ///< obstacle part indices, leaf by leaf
+  std::int32_t buildObstacleTree(std::uint32_t first, std::uint32_t count);
   mutable QueryCounters counters_;
 };
 

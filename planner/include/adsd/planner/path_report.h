@@ -8,6 +8,7 @@
 
 #include <ompl/geometric/PathGeometric.h>
 
+#include "adsd/planner/arm_clearance_objective.h"
 #include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/rigid_body_validity_checker.h"
 
@@ -26,6 +27,20 @@ struct PathMeasures {
 /// is unchanged). The clearance queries count on the checker like any other.
 /// Any checker with a clearance: RigidBodyValidityChecker, ArmValidityCheckerBase.
 PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ompl::base::StateValidityChecker& checker);
+
+/// \brief An arm path's clearance as the clearance objective measures it (ArmMotionClearance).
+struct ArmPathClearance {
+  double min = 0.0;   ///< exact, the least at the states sampled
+  double mean = 0.0;  ///< over the states sampled
+  std::size_t statesSampled = 0;
+  double certifiedMin = 0.0;  ///< a lower bound of the least clearance anywhere along the path
+};
+
+/// \brief Measures \p path with \p clearance: its exact clearance at the path's states
+/// interpolated \p step apart (the space's distance; a copy is interpolated), and the least of
+/// its motions' certified lower bounds (ArmMotionClearance::along).
+ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& path,
+                                         const ArmMotionClearance& clearance, double step);
 
 /// \brief Writes one state per line, its real values separated by spaces (SE(2): x y yaw;
 /// SE(3): x y z qx qy qz qw). Written to a temporary file renamed on success, so a failure
