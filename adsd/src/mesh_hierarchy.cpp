@@ -83,6 +83,25 @@ std::array<Vec3, 8> corners(const OrientedBox& box) {
   return c;
 }
 
+/// Whether two of triangles order[t0, t1) face directions more than MeshHierarchy::kFoldCosine
+/// apart (Node::folded). Triangles without area have no direction and fold nothing.
+bool isFolded(const Mesh& mesh, const std::uint32_t* order, std::uint32_t t0, std::uint32_t t1) {
+  std::array<Vec3, MeshHierarchy::kLeafTriangles> normals;
+  std::uint32_t count = 0;
+  for (std::uint32_t i = t0; i < t1; ++i) {
+    const std::uint32_t t = order[i];
+    const Vec3 n = (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0));
+    const double length = n.norm();
+    if (length > 0.0 && std::isfinite(length)) normals[count++] = n / length;
+  }
+  for (std::uint32_t i = 0; i < count; ++i) {
+    for (std::uint32_t j = i + 1; j < count; ++j) {
+      if (normals[i].dot(normals[j]) < MeshHierarchy::kFoldCosine) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
@@ -113,12 +132,13 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
       if (d2 < nearest2) {
         nearest2 = d2;
         node.repTriangle = order_[i];
-        node.repCorner = k;
+        node.repCorner = static_cast<std::uint16_t>(k);
       }
     }
   }
   node.repPoint = mesh.corner(node.repTriangle, static_cast<int>(node.repCorner));
   if (t1 - t0 <= kLeafTriangles) {
+    node.folded = isFolded(mesh, order_.data(), t0, t1);
     node.v0 = static_cast<std::uint32_t>(leafVertices_.size());
     for (std::uint32_t i = t0; i < t1; ++i) {
       for (std::uint32_t v : mesh.triangles()[order_[i]]) {
@@ -154,6 +174,7 @@ void MeshHierarchy::refit(const Mesh& mesh) {
     Node& n = nodes_[i];
     n.repPoint = mesh.corner(n.repTriangle, static_cast<int>(n.repCorner));
     if (n.isLeaf()) {
+      n.folded = isFolded(mesh, order_.data(), n.t0, n.t1);  // a deformation may fold or flatten it
       std::vector<Vec3> points;
       for (std::uint32_t k = n.v0; k < n.v1; ++k) points.push_back(mesh.vertices()[leafVertices_[k]]);
       fitExtents(n.box, points);

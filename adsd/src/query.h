@@ -38,6 +38,13 @@ struct PendingNodePair {
   double nearness;  // how near the pair looks: the order among equal lower bounds (traverseTrees)
 };
 
+/// A tree node waiting in a support search (Query::nodeSupport), with its box's reach along the
+/// search direction.
+struct NodeReach {
+  std::int32_t node;
+  double reach;
+};
+
 /// Where the last query between two meshes found its answer: the triangles of its witnesses.
 /// A planner's consecutive queries between the same meshes are near each other, so that pair's
 /// distance at the new poses is an upper bound close to the new answer before any node pair is
@@ -61,7 +68,7 @@ struct DistanceScratch::Buffers {
   // The traversal's pending node pairs: a stack for validity queries, a heap for the others.
   std::vector<PendingNodePair> pendingNodePairs;
   // Branch and bound over a subtree for a node's support point.
-  std::vector<std::int32_t> supportStack;
+  std::vector<NodeReach> supportStack;
   // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
   // them in place (depth first, so a range holds the same set whenever it is revisited).
   std::vector<std::uint32_t> orderA, orderB;
@@ -144,7 +151,7 @@ class Query {
   /// searched from \p warm (a point of the node's, mesh frame); the result names a triangle of
   /// the node's that has it as a corner.
   static SupportPoint nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
-                                  SupportPoint warm, std::vector<std::int32_t>& stack);
+                                  SupportPoint warm, std::vector<NodeReach>& stack);
   /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
   /// margin and offers the closest support points as an upper bound. Stops once the margin proves
   /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).

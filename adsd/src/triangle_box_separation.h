@@ -6,8 +6,10 @@
 // the room corner), and a triangle proven far from a node's box is far from all of its subtree.
 
 #include <algorithm>
+#include <cmath>
 
 #include "adsd/mesh_hierarchy.h"
+#include "box_separation.h"
 
 namespace adsd::detail {
 
@@ -38,6 +40,37 @@ inline bool triangleFartherFromBox(const Vec3 p[3], const OrientedBox& box, doub
   const double s0 = n.dot(q[0]), s1 = n.dot(q[1]), s2 = n.dot(q[2]);
   const double g = std::max(std::min({s0, s1, s2}) - reach, -reach - std::max({s0, s1, s2}));
   return g > 0.0 && g * g > bound2 * n2;
+}
+
+/// \brief A lower bound of the distance between the triangle with corners \p p and the box, both
+/// in the same frame, worked out only until it passes \p bound (as boxLowerBound does for two
+/// boxes), with the spheres' gap for ordering: the bound of a tree node pair where one node is
+/// a single triangle of a leaf (tree_traversal.cpp splits a leaf into its triangles when it faces
+/// a much smaller node). Directions: the centre line of the triangle's and the box's spheres,
+/// the box's three face normals (the gap vector of the two boxes in the box's frame) and the
+/// triangle's normal.
+inline BoxPairBound triangleBoxLowerBound(const Vec3 p[3], const OrientedBox& box, double bound) {
+  const Vec3 centroid = (p[0] + p[1] + p[2]) / 3.0;
+  const double radius =
+      std::sqrt(std::max({(p[0] - centroid).squaredNorm(), (p[1] - centroid).squaredNorm(), (p[2] - centroid).squaredNorm()}));
+  const double sphereGap = (centroid - box.center).norm() - radius - box.radius;
+  if (sphereGap > bound) return {sphereGap, sphereGap};
+  Vec3 q[3];
+  for (int k = 0; k < 3; ++k) q[k] = box.axes.transpose() * (p[k] - box.center);
+  const Vec3 lo = q[0].cwiseMin(q[1]).cwiseMin(q[2]);
+  const Vec3 hi = q[0].cwiseMax(q[1]).cwiseMax(q[2]);
+  const double faces = (lo - box.half).cwiseMax(-box.half - hi).cwiseMax(0.0).norm();
+  if (faces > bound) return {faces, sphereGap};
+  double normalGap = 0.0;
+  const Vec3 n = (q[1] - q[0]).cross(q[2] - q[0]);
+  const double n2 = n.squaredNorm();
+  if (n2 > 0.0) {
+    const double reach = n.cwiseAbs().dot(box.half);
+    const double s0 = n.dot(q[0]), s1 = n.dot(q[1]), s2 = n.dot(q[2]);
+    const double g = std::max(std::min({s0, s1, s2}) - reach, -reach - std::max({s0, s1, s2}));
+    if (g > 0.0) normalGap = g / std::sqrt(n2);
+  }
+  return {std::max({sphereGap, faces, normalGap}), sphereGap};
 }
 
 }  // namespace adsd::detail

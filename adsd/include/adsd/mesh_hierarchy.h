@@ -36,6 +36,10 @@ class MeshHierarchy {
  public:
   /// Leaves hold at most this many triangles: below it a GJK run costs more than direct tests.
   static constexpr std::uint32_t kLeafTriangles = 4;
+  /// A leaf is folded when two of its triangles' normals are more than this apart (cosine 0.5,
+  /// 60 degrees): the faces of a box meet at 90, a plate's sides at 180, while a capsule of 32
+  /// segments turns 11.25 degrees per strip and a fine scanned mesh less still.
+  static constexpr double kFoldCosine = 0.5;
 
   struct Node {
     /// Bounds of the node's vertices, mesh frame: oriented along their principal axes, which fit
@@ -48,7 +52,13 @@ class MeshHierarchy {
     /// corner nearest the box centre): two nodes' points are a real distance between the meshes,
     /// the traversal's cheap upper bound and ordering estimate for a node pair (sec. 4's upper
     /// bound from support points, taken from the tree instead of GJK).
-    std::uint32_t repTriangle = 0, repCorner = 0;
+    std::uint32_t repTriangle = 0;
+    std::uint16_t repCorner = 0;
+    /// Leaves: whether two of the leaf's triangles face directions more than 60 degrees apart (kFoldCosine)
+    /// (a fold: a box's edge or corner, a thin plate's two sides). A node near one face of a fold
+    /// is far from the others, so the traversal bounds a folded leaf's triangles one by one
+    /// (tree_traversal.cpp, worthNarrowing); a flat or gently curved leaf is bounded by its box.
+    std::uint16_t folded = 0;
     /// That corner's position (mesh frame), kept beside the box: the traversal reads it for every
     /// node pair it tests, and through the triangle and vertex arrays that is two dependent loads
     /// from memory the box did not bring into cache.
