@@ -1,12 +1,20 @@
-// bench_checker_calls: what a planner pays per validity check, ours against FCL's, without the
-// planner. For each problem file, both checkers are set up as `adsd plan` sets them up (the
+// bench_checker_calls: what a planner pays per validity check or clearance query, ours against
+// FCL's, without the planner. For each problem file, both checkers are set up as `adsd plan` sets them up (the
 // environment split into parts, the shared broad phase, our sub-mesh trees or FCL's OBBRSS
-// models), the same states are drawn, and StateValidityChecker::isValid is timed on them in
-// blocks, the two checkers interleaved block by block in alternating order. It isolates the
-// checker's term of the planning rows (issue 6), whose solve times also hold the planner's own
-// work and, for PRM, its threads' timing.
+// models), the same states are drawn, and StateValidityChecker::isValid (or, with --clearance,
+// clearance) is timed on them in blocks, the two checkers interleaved block by block in
+// alternating order. It isolates the checker's term of the planning rows (issue 6), whose solve
+// times also hold the planner's own work and, for PRM, its threads' timing.
 //
-//   bench_checker_calls [--states N] [--seed S] [--from uniform|rrtconnect|prm] PROBLEM.cfg...
+//   bench_checker_calls [--states N] [--seed S] [--from uniform|rrtconnect|prm|rrtstar...] [--clearance]
+//                       PROBLEM.cfg...
+//
+// --clearance: the exact clearance query instead of the validity check, on the same states for
+// both checkers (clearance_query_ratios.py times it in planning runs, whose states differ between
+// the checkers once their answers do). With --from PLANNER the planner runs with the clearance
+// objective (MaximizeMinClearanceObjective) for up to 2 s per solve, as in those runs, and the
+// states it asks clearance for are kept. The two answers must agree to 1e-9 of the scene's size
+// (FCL's distance is exact up to roundoff too): states where they do not are counted.
 //
 // The states: seeded uniform states of the problem's space (--from uniform, the default), or the
 // states a planner checks, in the order it checks them: the planner solves the problem again and
@@ -16,10 +24,12 @@
 // in contact, which cost both checkers more and in other proportions.
 //
 // Prints per problem: median microseconds per check over the blocks for each checker, ours ÷ FCL,
-// the share of states each found valid and the number of states on which they disagree (expected
-// 0: a state touches an obstacle exactly with probability 0). Exit status 0; 2 on bad usage or a
-// problem that cannot be set up; 3 when the checkers disagree on some state.
+// the share of states each found valid (with --clearance: in contact, distance 0) and the number
+// of states on which they disagree (expected 0: a state touches an obstacle exactly with
+// probability 0). Exit status 0; 2 on bad usage or a problem that cannot be set up; 3 when the
+// checkers disagree on some state.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -59,31 +69,48 @@ constexpr double kRecordingSolveSeconds = 10.0;
 /// checks almost nothing per solve would otherwise loop for long).
 constexpr int kMaxRecordingSolves = 10000;
 
+/// Time limit of one clearance-objective solve while its states are recorded (seconds): the
+/// planning runs' (bench/planning/clearance_query_ratios.py --time 2); RRT* refines its tree for
+/// all of it.
+constexpr double kClearanceSolveSeconds = 2.0;
+
+/// Two clearances agree when they differ by at most this fraction of the scene's size.
+constexpr double kClearanceAgreement = 1e-9;
+
 struct Options {
   std::size_t states = 100000;
   unsigned long seed = 1;
   std::string from = "uniform";  // or a planner's name
+  bool clearance = false;        // time clearance() instead of isValid()
   std::vector<std::string> problems;
 };
 
-/// \brief Passes every check to another checker and keeps a copy of each state, up to a limit.
-/// Planners may check from several threads (PRM), hence the lock; its cost is the planner's, and
-/// only the replay is timed.
+/// \brief Passes every check to another checker and keeps a copy of each state checked (or each
+/// state asked for clearance), up to a limit. Planners may check from several threads (PRM),
+/// hence the lock; its cost is the planner's, and only the replay is timed.
 class RecordingChecker final : public ompl::base::StateValidityChecker {
  public:
   RecordingChecker(const ompl::base::SpaceInformationPtr& si, std::shared_ptr<ompl::base::StateValidityChecker> inner,
-                   std::size_t limit)
-      : ompl::base::StateValidityChecker(si), inner_(std::move(inner)), limit_(limit) {}
+                   std::size_t limit, bool clearanceStates)
+      : ompl::base::StateValidityChecker(si), inner_(std::move(inner)), limit_(limit),
+        clearanceStates_(clearanceStates) {
+    specs_ = inner_->getSpecs();
+  }
   ~RecordingChecker() override {
     for (ompl::base::State* s : states_) si_->freeState(s);
   }
 
   bool isValid(const ompl::base::State* state) const override {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (states_.size() < limit_) states_.push_back(si_->cloneState(state));
-    }
+    if (!clearanceStates_) record(state);
     return inner_->isValid(state);
+  }
+  bool isValid(const ompl::base::State* state, double& dist) const override {
+    if (clearanceStates_) record(state);
+    return inner_->isValid(state, dist);
+  }
+  double clearance(const ompl::base::State* state) const override {
+    if (clearanceStates_) record(state);
+    return inner_->clearance(state);
   }
   std::size_t recorded() const {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -96,30 +123,41 @@ class RecordingChecker final : public ompl::base::StateValidityChecker {
   }
 
  private:
+  void record(const ompl::base::State* state) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (states_.size() < limit_) states_.push_back(si_->cloneState(state));
+  }
+
   std::shared_ptr<ompl::base::StateValidityChecker> inner_;
   std::size_t limit_;
+  bool clearanceStates_;
   mutable std::mutex mutex_;
   mutable std::vector<ompl::base::State*> states_;
 };
 
 /// The first \p count states \p plannerName checks on \p problem (set up with FCL's checker),
-/// over as many solves as that takes; each solve stops at its first solution.
+/// over as many solves as that takes; each solve stops at its first solution. With
+/// \p clearanceStates, the states it asks clearance for instead, each solve optimizing the
+/// problem's objective (the clearance objective) for kClearanceSolveSeconds.
 std::vector<ompl::base::State*> plannerStates(adsd::planner::PlanningProblem& problem, const std::string& plannerName,
-                                              std::size_t count) {
+                                              std::size_t count, bool clearanceStates) {
   ompl::geometric::SimpleSetup& setup = problem.setup();
   const auto& si = problem.spaceInformation();
-  auto recorder = std::make_shared<RecordingChecker>(si, problem.checker(), count);
+  auto recorder = std::make_shared<RecordingChecker>(si, problem.checker(), count, clearanceStates);
   setup.setStateValidityChecker(recorder);
   ompl::base::PlannerPtr planner = adsd::planner::makePlanner(plannerName, si);
   if (!planner) throw std::runtime_error("no planner named '" + plannerName + "'");
   setup.setPlanner(planner);
-  // Any path meets the objective, so that optimizing roadmaps (PRM) stop at their first solution,
-  // as in the planning rows (bench/planning/solve_time_ratios.py).
-  setup.getProblemDefinition()->getOptimizationObjective()->setCostThreshold(
-      ompl::base::Cost(std::numeric_limits<double>::infinity()));
+  // Any path meets the length objective, so that optimizing roadmaps (PRM) stop at their first
+  // solution, as in the planning rows (bench/planning/solve_time_ratios.py). The clearance
+  // objective keeps its threshold, which no path meets: RRT* refines for the whole limit.
+  if (!clearanceStates) {
+    setup.getProblemDefinition()->getOptimizationObjective()->setCostThreshold(
+        ompl::base::Cost(std::numeric_limits<double>::infinity()));
+  }
   for (int solve = 0; solve < kMaxRecordingSolves && recorder->recorded() < count; ++solve) {
     setup.clear();
-    setup.solve(kRecordingSolveSeconds);
+    setup.solve(clearanceStates ? kClearanceSolveSeconds : kRecordingSolveSeconds);
   }
   setup.setStateValidityChecker(problem.checker());
   return recorder->take();
@@ -127,14 +165,18 @@ std::vector<ompl::base::State*> plannerStates(adsd::planner::PlanningProblem& pr
 
 adsd::cli::CommandLine commandLine() {
   adsd::cli::CommandLine line(
-      "bench_checker_calls", "bench_checker_calls [--states N] [--seed S] [--from uniform|rrtconnect|prm] PROBLEM.cfg...",
-      "Times StateValidityChecker::isValid, ours against FCL's checker, on the same states of each problem.",
+      "bench_checker_calls",
+      "bench_checker_calls [--states N] [--seed S] [--from uniform|rrtconnect|prm|...] [--clearance] PROBLEM.cfg...",
+      "Times StateValidityChecker::isValid (or clearance), ours against FCL's checker, on the same states of each "
+      "problem.",
       "Exit status 0; 2 on bad usage or a problem that cannot be set up; 3 when the checkers disagree on some state.");
   line.options()
       ("states", adsd::cli::value("N"), "states per problem, at least 1000 (default 100000)")
       ("seed", adsd::cli::value("S"), "OMPL's random seed, 1 to 4294967295 (default 1)")
       ("from", adsd::cli::value("uniform|PLANNER"),
-       "uniform states (default), or the states a planner (rrtconnect, prm, ...) checks, in its order");
+       "uniform states (default), or the states a planner (rrtconnect, prm, ...) checks, in its order")
+      ("clearance", "time the exact clearance query instead of the validity check (with --from PLANNER: the "
+                    "states the planner asks clearance for, optimizing clearance)");
   line.positional("problem");
   return line;
 }
@@ -149,6 +191,7 @@ Options parse(const adsd::cli::Arguments& given) {
     throw adsd::cli::UsageError("--from: expected uniform or a planner's name (rrtconnect, prm, ...), got '" + o.from +
                                 "'");
   }
+  o.clearance = given.has("clearance");
   o.problems = given.texts("problem");
   if (o.problems.empty()) throw adsd::cli::UsageError("no problem file given");
   return o;
@@ -160,12 +203,17 @@ int run(const Options& options) {
   // (its problems in its order) always draws the same states.
   ompl::RNG::setSeed(options.seed);
   const bool uniform = options.from == "uniform";
-  std::printf("Median microseconds per isValid call over blocks of %zu states (%zu states, seed %lu): %s;\n"
+  const char* const call = options.clearance ? "exact clearance" : "isValid";
+  const std::string source =
+      uniform ? "uniform states"
+              : options.clearance ? "the states " + options.from +
+                                        " asks clearance for, optimizing clearance, in its order, solve after solve"
+                                  : "the states " + options.from + " checks, in its order, solve after solve";
+  std::printf("Median microseconds per %s call over blocks of %zu states (%zu states, seed %lu): %s;\n"
               "the two checkers interleaved block by block; both share the broad phase over environment parts.\n",
-              kBlockStates, options.states, options.seed,
-              uniform ? "uniform states"
-                      : ("the states " + options.from + " checks, in its order, solve after solve").c_str());
-  std::printf("%-18s %12s %12s %10s %12s %12s\n", "problem", "ours us", "fcl us", "ratio", "valid share", "disagree");
+              call, kBlockStates, options.states, options.seed, source.c_str());
+  std::printf("%-18s %12s %12s %10s %12s %12s\n", "problem", "ours us", "fcl us", "ratio",
+              options.clearance ? "free share" : "valid share", "disagree");
   bool disagreement = false;
   for (const std::string& path : options.problems) {
     try {
@@ -173,6 +221,7 @@ int run(const Options& options) {
       CheckingOptions ours, fcl;
       ours.checker = CheckerKind::adsd;
       fcl.checker = CheckerKind::fcl;
+      if (options.clearance) ours.objective = fcl.objective = adsd::planner::ObjectiveKind::maxMinClearance;
       PlanningProblem withOurs(file, ours), withFcl(file, fcl);
       const auto& si = withOurs.spaceInformation();
 
@@ -188,33 +237,43 @@ int run(const Options& options) {
           sampler->sampleUniform(s);
         }
       } else {
-        states = plannerStates(withFcl, options.from, options.states);
+        states = plannerStates(withFcl, options.from, options.states, options.clearance);
       }
       const std::size_t blocks = states.size() / kBlockStates;
       for (std::size_t i = blocks * kBlockStates; i < states.size(); ++i) owner->freeState(states[i]);
       states.resize(blocks * kBlockStates);
       if (blocks == 0) throw std::runtime_error(file.name + ": fewer than " + std::to_string(kBlockStates) + " states");
       std::vector<char> validOurs(states.size()), validFcl(states.size());
+      std::vector<double> clearanceOurs(options.clearance ? states.size() : 0),
+          clearanceFcl(options.clearance ? states.size() : 0);
       std::vector<double> microsOurs, microsFcl;
-      auto runBlock = [&](const PlanningProblem& problem, std::size_t b, std::vector<char>& valid) {
+      auto runBlock = [&](const PlanningProblem& problem, std::size_t b, std::vector<char>& valid,
+                          std::vector<double>& clearance) {
         const auto& checker = *problem.checker();
-        return microsecondsOf([&] {
-          for (std::size_t i = b * kBlockStates; i < (b + 1) * kBlockStates; ++i) valid[i] = checker.isValid(states[i]);
-        });
+        const std::size_t first = b * kBlockStates, last = (b + 1) * kBlockStates;
+        if (options.clearance) {
+          const double micros =
+              microsecondsOf([&] { for (std::size_t i = first; i < last; ++i) clearance[i] = checker.clearance(states[i]); });
+          for (std::size_t i = first; i < last; ++i) valid[i] = clearance[i] > 0.0;
+          return micros;
+        }
+        return microsecondsOf([&] { for (std::size_t i = first; i < last; ++i) valid[i] = checker.isValid(states[i]); });
       };
       for (std::size_t b = 0; b < blocks; ++b) {
         if (b % 2 == 0) {
-          microsOurs.push_back(runBlock(withOurs, b, validOurs));
-          microsFcl.push_back(runBlock(withFcl, b, validFcl));
+          microsOurs.push_back(runBlock(withOurs, b, validOurs, clearanceOurs));
+          microsFcl.push_back(runBlock(withFcl, b, validFcl, clearanceFcl));
         } else {
-          microsFcl.push_back(runBlock(withFcl, b, validFcl));
-          microsOurs.push_back(runBlock(withOurs, b, validOurs));
+          microsFcl.push_back(runBlock(withFcl, b, validFcl, clearanceFcl));
+          microsOurs.push_back(runBlock(withOurs, b, validOurs, clearanceOurs));
         }
       }
       std::size_t valid = 0, differ = 0;
+      const double agreement = kClearanceAgreement * withOurs.spaceInformation()->getMaximumExtent();
       for (std::size_t i = 0; i < states.size(); ++i) {
         valid += validOurs[i] != 0;
-        differ += validOurs[i] != validFcl[i];
+        differ += validOurs[i] != validFcl[i] ||
+                  (options.clearance && !(std::abs(clearanceOurs[i] - clearanceFcl[i]) <= agreement));
       }
       for (ompl::base::State* s : states) owner->freeState(s);
       const double usOurs = median(microsOurs) / kBlockStates, usFcl = median(microsFcl) / kBlockStates;
