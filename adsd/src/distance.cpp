@@ -247,6 +247,14 @@ DistanceResult Query::run() {
     // far apart for their size (the hull bound).
     // A validity query on trees measures the hint only once its roots are found near enough
     // (traverseTrees): most such queries end at the roots, for less than one triangle pair.
+    // Two small convex parts (a box robot against box obstacles, one pair at a time in a
+    // planner's checker): GJK on their vertices usually settles an exact, cap or tolerance query
+    // by itself, with one triangle pair (convex_pair.cpp). A validity query between them ends at
+    // the roots of the traversal already.
+    if (options_.mode != QueryMode::threshold && treeA_->onHullBoundary() && treeB_->onHullBoundary() &&
+        settleConvexPair()) {
+      return remember(finish());
+    }
     if (options_.mode != QueryMode::threshold) startFromWitnessHint();
     if (!done_) traverseTrees();
     return remember(finish());

@@ -61,21 +61,30 @@ struct GjkResult {
   /// Closest pair among all support points met (every support pair of every iteration and all
   /// cross pairs of the final simplices): the paper's upper bound (sec. 4, Fig. 1).
   PointPair closest;
+  /// The points of CH(A) and CH(B) that the last simplex's closest point v = onA - onB combines
+  /// (its barycentric weights applied to each side's support points): where the hulls are
+  /// nearest, when GJK converged. On convex meshes these lie on the surfaces (convex_pair.cpp).
+  Vec3 onA = Vec3::Zero();
+  Vec3 onB = Vec3::Zero();
 };
 
 /// \brief Runs GJK. supportA(d) returns A's point maximizing d.p, supportB(d) B's. `start` is the
 /// first search vector (any non-zero guess of a - b). `skip(lower)` is asked after each iteration
 /// whether the current lower bound already lets the caller drop this pair. `magnitude` is the
 /// largest |coordinate| of either set (it scales the roundoff allowance kBoundSafetyUlps).
+/// `relativeGap`: the loop stops once the lower bound is within this fraction of |v|; 0 runs it
+/// to convergence (a repeated support point, or no more progress), for callers that need the
+/// hulls' distance itself (convex_pair.cpp).
 template <class SupportA, class SupportB, class SkipTest>
 GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start, const SkipTest& skip,
-                 double magnitude) {
+                 double magnitude, double relativeGap = tolerance::kGjkRelativeGap) {
   const double roundoff = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude;
   const double touch2 = tolerance::kGjkTouchRelative2 * magnitude * magnitude;
   GjkResult r;
   Vec3 v = start.squaredNorm() > 0.0 ? start : Vec3::UnitX();
   Vec3 w[4];
   SupportPoint sa[4], sb[4];
+  double weight[4] = {1.0, 0.0, 0.0, 0.0};  // of the kept simplex's points, summing to 1
   int count = 0;
 
   for (r.iterations = 1; r.iterations <= tolerance::kGjkMaxIterations; ++r.iterations) {
@@ -101,7 +110,7 @@ GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start,
     }
     // Converged: |v| (the distance of the current simplices, an upper bound of the hull distance)
     // is within the relative gap of the lower bound.
-    if (count > 0 && r.lower > roundoff && vNorm - r.lower <= tolerance::kGjkRelativeGap * vNorm) {
+    if (count > 0 && r.lower > roundoff && vNorm - r.lower <= relativeGap * vNorm) {
       r.stop = GjkStop::converged;
       break;
     }
@@ -125,9 +134,11 @@ GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start,
         w[kept] = w[i];
         sa[kept] = sa[i];
         sb[kept] = sb[i];
+        weight[kept] = s.weight[i];
         ++kept;
       }
     }
+    if (kept == 0) weight[0] = 1.0;
     count = kept > 0 ? kept : 1;
     if (s.containsOrigin) {
       r.stop = GjkStop::originEnclosed;
@@ -148,8 +159,16 @@ GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start,
   if (r.iterations > tolerance::kGjkMaxIterations) r.iterations = tolerance::kGjkMaxIterations;
 
   // The paper's upper bound: all pairs of simplex points, A's against B's (Observation 1).
+  double total = 0.0;
   for (int i = 0; i < count; ++i) {
     for (int j = 0; j < count; ++j) r.closest.offer(sa[i], sb[j]);
+    r.onA += weight[i] * sa[i].point;
+    r.onB += weight[i] * sb[i].point;
+    total += weight[i];
+  }
+  if (total > 0.0) {
+    r.onA /= total;
+    r.onB /= total;
   }
   r.outcome = r.lower > roundoff ? GjkOutcome::separated : GjkOutcome::overlapping;
   return r;

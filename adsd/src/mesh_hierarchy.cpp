@@ -102,9 +102,38 @@ bool isFolded(const Mesh& mesh, const std::uint32_t* order, std::uint32_t t0, st
   return false;
 }
 
+/// Whether every triangle of \p mesh with an area has all the mesh's vertices on one side of
+/// its plane, up to roundoff (MeshHierarchy::onHullBoundary), for meshes of at most
+/// kConvexCheckVertices vertices: O(triangles x vertices), so only small meshes are checked.
+bool liesOnHullBoundary(const Mesh& mesh) {
+  const std::vector<Vec3>& vertices = mesh.vertices();
+  if (vertices.empty() || vertices.size() > MeshHierarchy::kConvexCheckVertices) return false;
+  const double extent = mesh.bounds().sizes().maxCoeff();
+  if (!(extent > 0.0) || !std::isfinite(extent)) return false;
+  // A vertex this close to a plane is on it: only the hull's own faces pass, and a vertex that
+  // rounding left on the wrong side by a hair keeps a real convex part in.
+  const double onPlane = 1e-9 * extent;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const Vec3 a = mesh.corner(t, 0);
+    const Vec3 n = (mesh.corner(t, 1) - a).cross(mesh.corner(t, 2) - a);
+    const double length = n.norm();
+    if (!(length > 0.0) || !std::isfinite(length)) continue;  // no plane: constrains nothing
+    const Vec3 unit = n / length;
+    bool above = false, below = false;
+    for (const Vec3& v : vertices) {
+      const double h = unit.dot(v - a);
+      above = above || h > onPlane;
+      below = below || h < -onPlane;
+    }
+    if (above && below) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
+  onHullBoundary_ = liesOnHullBoundary(mesh);
   order_.resize(mesh.triangleCount());
   std::iota(order_.begin(), order_.end(), 0u);
   nodes_.reserve(2 * (mesh.triangleCount() / kLeafTriangles + 1));
@@ -167,6 +196,7 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
 }
 
 void MeshHierarchy::refit(const Mesh& mesh) {
+  onHullBoundary_ = liesOnHullBoundary(mesh);  // a deformation may dent a convex mesh
   // Children come after their parent in nodes_, so a backward sweep sees children first.
   for (std::size_t i = nodes_.size(); i-- > 0;) {
     // The axes stay; the extents are fitted anew (to the leaf's vertices, or to the corners of

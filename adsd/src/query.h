@@ -152,6 +152,11 @@ class Query {
   /// the node's that has it as a corner.
   static SupportPoint nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
                                   SupportPoint warm, std::vector<NodeReach>& stack);
+  /// Both meshes small and on their hulls' boundaries (MeshHierarchy::onHullBoundary): GJK on
+  /// all their vertices, to convergence, and the triangle pair at the hulls' nearest points
+  /// (convex_pair.cpp). True when that settles the query (the support planes' gap proves the
+  /// pair's distance, or the mode's rule drops the rest); else the upper bound found stays.
+  bool settleConvexPair();
   /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
   /// margin and offers the closest support points as an upper bound. Stops once the margin proves
   /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).

@@ -40,6 +40,10 @@ class MeshHierarchy {
   /// 60 degrees): the faces of a box meet at 90, a plate's sides at 180, while a capsule of 32
   /// segments turns 11.25 degrees per strip and a fine scanned mesh less still.
   static constexpr double kFoldCosine = 0.5;
+  /// Meshes of at most this many vertices are checked for lying on their convex hull's boundary
+  /// (onHullBoundary): a box obstacle or robot part (8), a primitive cylinder or a convex part
+  /// of a decomposed model. The check costs triangles x vertices, once per tree.
+  static constexpr std::size_t kConvexCheckVertices = 64;
 
   struct Node {
     /// Bounds of the node's vertices, mesh frame: oriented along their principal axes, which fit
@@ -79,6 +83,12 @@ class MeshHierarchy {
   const std::vector<std::uint32_t>& leafVertices() const { return leafVertices_; }
   /// \brief Bytes kept between queries (for the memory figure of issue 6).
   std::size_t bytes() const;
+  /// \brief Whether the mesh is small (kConvexCheckVertices) and every triangle's plane has all
+  /// its vertices on one side: its triangles then lie on its convex hull's boundary (a box, a
+  /// convex part). Between two such meshes the distance is usually their hulls' (GJK on the
+  /// vertices), and queries try that first (convex_pair.cpp), which proves or rejects it; an open
+  /// box also passes, and only costs that try.
+  bool onHullBoundary() const { return onHullBoundary_; }
 
  private:
   std::int32_t build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, std::vector<std::uint32_t>& marks);
@@ -86,6 +96,7 @@ class MeshHierarchy {
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> leafVertices_;
+  bool onHullBoundary_ = false;
 };
 
 }  // namespace adsd
