@@ -38,6 +38,11 @@
 #                         bench_checker_calls: microseconds per isValid call of each checker on
 #                         the planning problems' uniform states, and on the states RRTConnect and
 #                         PRM check (the checker's term of the planning rows)
+#   checker_calls_clearance.txt, checker_calls_clearance_rrtstar.txt
+#                         bench_checker_calls --clearance: microseconds per exact clearance query of
+#                         each checker on the same states: every planning problem's uniform states,
+#                         and the states RRT* asks clearance for on the five above (paired, where
+#                         clearance_queries.md's planning runs are not)
 #   planning_solve_times.md, planning_solve_times_maze.md, planning_solve_times_maze_prm.md,
 #   planning_solve_times_hard.md
 #                         bench/planning/solve_time_ratios.py: the end-to-end rows (RRTConnect
@@ -86,6 +91,13 @@ checker_call_problems() {
   echo "$p/office.cfg $p/maze.cfg $p/thin_wall.cfg $p/bug_trap.cfg $p/twisted_passage.cfg"
 }
 
+# Every planning problem, for the clearance queries timed on uniform states.
+all_problems() {
+  local p="$1/problem_files"
+  echo "$p/office.cfg $p/maze.cfg $p/thin_wall.cfg $p/bug_trap.cfg $p/twisted_passage.cfg $p/alpha_puzzle.cfg" \
+    "$p/cow_doorway.cfg"
+}
+
 # A planning table's caption: the command that made it, read back from the table's own "Command:"
 # line (which names its options but not the build), with the program and problems of $build.
 planning_caption() {
@@ -132,9 +144,16 @@ paste_results() {
     /usr/bin/python3 bench/paste_results.py "$page" planning "${calls[@]}" "${tables[@]}"
   fi
   if [[ -f bench/results/clearance_queries.md ]]; then
+    local paired=()  # results from before --clearance existed have no checker_calls_clearance*.txt
+    [[ -f bench/results/checker_calls_clearance.txt ]] &&
+      paired+=("$build/bench/bench_checker_calls --clearance --states 20000 $(all_problems "$build")"
+               bench/results/checker_calls_clearance.txt)
+    [[ -f bench/results/checker_calls_clearance_rrtstar.txt ]] &&
+      paired+=("$build/bench/bench_checker_calls --clearance --from rrtstar --states 20000 $(checker_call_problems "$build")"
+               bench/results/checker_calls_clearance_rrtstar.txt)
     /usr/bin/python3 bench/paste_results.py "$page" clearance \
       "bench/planning/clearance_query_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --seeds 5 --time 2" \
-      bench/results/clearance_queries.md
+      bench/results/clearance_queries.md "${paired[@]}"
   fi
   if [[ -f bench/results/planning_control.md ]]; then
     planning_tables planning_control planning_control_hard
@@ -227,6 +246,10 @@ for from in rrtconnect prm; do
   step checker_calls_$from sh -c "'$build/bench/bench_checker_calls' --from $from $(checker_call_problems "$build") \
     > '$staging/checker_calls_$from.txt'"
 done
+step checker_calls_clearance sh -c "'$build/bench/bench_checker_calls' --clearance --states 20000 \
+  $(all_problems "$build") > '$staging/checker_calls_clearance.txt'"
+step checker_calls_clearance_rrtstar sh -c "'$build/bench/bench_checker_calls' --clearance --from rrtstar \
+  --states 20000 $(checker_call_problems "$build") > '$staging/checker_calls_clearance_rrtstar.txt'"
 # perf may be installed yet not allowed to sample (kernel.perf_event_paranoid, containers): try it.
 if command -v perf >/dev/null && perf record -q -o "$staging/perf-probe.data" true >/dev/null 2>&1; then
   rm -f "$staging/perf-probe.data"

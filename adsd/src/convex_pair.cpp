@@ -19,7 +19,8 @@ namespace {
 
 /// Squared distance from \p p to triangle (a, b, c): the closest point by the region of the
 /// triangle's plane that p's foot falls in (vertex, edge or face; Ericson, Real-Time Collision
-/// Detection, sec. 5.1.5). Zero-area triangles fall into a vertex or edge region.
+/// Detection, sec. 5.1.5). Zero-area triangles fall into a vertex or edge region; a zero-length
+/// edge is taken at its first end.
 double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
@@ -28,27 +29,34 @@ double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
   if (d3 >= 0.0 && d4 <= d3) return bp.squaredNorm();
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return (ap - (d1 / (d1 - d3)) * ab).squaredNorm();
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return d1 > d3 ? (ap - (d1 / (d1 - d3)) * ab).squaredNorm() : ap.squaredNorm();
   const Vec3 cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
   if (d6 >= 0.0 && d5 <= d6) return cp.squaredNorm();
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return (ap - (d2 / (d2 - d6)) * ac).squaredNorm();
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return d2 > d6 ? (ap - (d2 / (d2 - d6)) * ac).squaredNorm() : ap.squaredNorm();
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
-    return (bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)).squaredNorm();
+    const double along = (d4 - d3) + (d5 - d6);
+    return along > 0.0 ? (bp - ((d4 - d3) / along) * (c - b)).squaredNorm() : bp.squaredNorm();
   }
   const double denominator = va + vb + vc;
   if (!(denominator > 0.0)) return ap.squaredNorm();  // degenerate: the regions above missed it
   return (ap - (vb / denominator) * ab - (vc / denominator) * ac).squaredNorm();
 }
 
-/// The triangle of \p mesh nearest to \p p (mesh frame).
-std::uint32_t nearestTriangle(const Mesh& mesh, const Vec3& p) {
+/// The triangle of \p mesh nearest to \p p (mesh frame), a point on the mesh's hull in its support
+/// plane along \p d (the vertices' largest d.x is \p reach). Only triangles with a corner within
+/// \p slack of that plane are measured: a triangle that holds p has one there (it lies in the
+/// plane, or meets it at p's edge or vertex), and on a round mesh they are a handful.
+std::uint32_t nearestTriangle(const Mesh& mesh, const Vec3& p, const Vec3& d, double reach, double slack) {
   std::uint32_t nearest = 0;
   double nearest2 = std::numeric_limits<double>::infinity();
+  const double plane = reach - slack;
   for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
-    const double d2 = pointTriangleDistance2(p, mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2));
+    const Vec3 a = mesh.corner(t, 0), b = mesh.corner(t, 1), c = mesh.corner(t, 2);
+    if (d.dot(a) < plane && d.dot(b) < plane && d.dot(c) < plane) continue;
+    const double d2 = pointTriangleDistance2(p, a, b, c);
     if (d2 < nearest2) {
       nearest2 = d2;
       nearest = t;
@@ -98,8 +106,14 @@ bool Query::settleConvexPair() {
   // The hulls' nearest points lie on both surfaces (each mesh is on its hull's boundary), so the
   // triangles nearest to them carry them; their distance is the hulls' up to roundoff, unless a
   // mesh has a hole where its hull is nearest (then the traversal below decides).
-  const std::uint32_t triangleA = nearestTriangle(a_, g.onA);
-  const std::uint32_t triangleB = nearestTriangle(b_, rotationAB_ * (g.onB - translationBA_));
+  // g.direction points from A towards B: A's support plane along it, B's along its opposite
+  // (in B's frame). The slack covers the roundoff of the supports and of GJK's last direction.
+  const double slack = 1e-9 * magnitude_ + roundoff_;
+  const Vec3 towardsB = g.direction, towardsAInB = -(rotationAB_ * g.direction);
+  const double reachB = towardsAInB.dot(verticesB[supportVertex(verticesB, towardsAInB)]);
+  const std::uint32_t triangleA = nearestTriangle(a_, g.onA, towardsB, g.maxA, slack);
+  const std::uint32_t triangleB =
+      nearestTriangle(b_, rotationAB_ * (g.onB - translationBA_), towardsAInB, reachB, slack);
   const TrianglePairResult t = triangleDistance(a_.corner(triangleA, 0), a_.corner(triangleA, 1),
                                                 a_.corner(triangleA, 2), toA(b_.corner(triangleB, 0)),
                                                 toA(b_.corner(triangleB, 1)), toA(b_.corner(triangleB, 2)));

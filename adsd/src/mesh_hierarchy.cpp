@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -102,12 +103,29 @@ bool isFolded(const Mesh& mesh, const std::uint32_t* order, std::uint32_t t0, st
   return false;
 }
 
-/// Whether every triangle of \p mesh with an area has all the mesh's vertices on one side of
-/// its plane, up to roundoff (MeshHierarchy::onHullBoundary), for meshes of at most
-/// kConvexCheckVertices vertices: O(triangles x vertices), so only small meshes are checked.
-bool liesOnHullBoundary(const Mesh& mesh) {
+/// Whether every edge of \p mesh (by vertex index) belongs to exactly two triangles: no hole.
+bool isClosed(const Mesh& mesh) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  edges.reserve(3 * mesh.triangleCount());
+  for (const TriangleIndices& t : mesh.triangles()) {
+    for (int k = 0; k < 3; ++k) edges.emplace_back(std::minmax(t[k], t[(k + 1) % 3]));
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size(); i += 2) {
+    if (i + 1 >= edges.size() || edges[i] != edges[i + 1] || (i + 2 < edges.size() && edges[i + 2] == edges[i])) {
+      return false;
+    }
+  }
+  return !edges.empty();
+}
+
+}  // namespace
+
+// O(triangles x vertices), hence only for small meshes. Closed, because a hole where the hull is nearest (a wall cut in two by a planner's scene
+/// splitter, an open box) leaves the hulls nearer than the surfaces and GJK's try is lost.
+bool isClosedConvex(const Mesh& mesh) {
   const std::vector<Vec3>& vertices = mesh.vertices();
-  if (vertices.empty() || vertices.size() > MeshHierarchy::kConvexCheckVertices) return false;
+  if (vertices.empty() || vertices.size() > MeshHierarchy::kConvexCheckVertices || !isClosed(mesh)) return false;
   const double extent = mesh.bounds().sizes().maxCoeff();
   if (!(extent > 0.0) || !std::isfinite(extent)) return false;
   // A vertex this close to a plane is on it: only the hull's own faces pass, and a vertex that
@@ -130,10 +148,8 @@ bool liesOnHullBoundary(const Mesh& mesh) {
   return true;
 }
 
-}  // namespace
-
 MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
-  onHullBoundary_ = liesOnHullBoundary(mesh);
+  onHullBoundary_ = isClosedConvex(mesh);
   order_.resize(mesh.triangleCount());
   std::iota(order_.begin(), order_.end(), 0u);
   nodes_.reserve(2 * (mesh.triangleCount() / kLeafTriangles + 1));
@@ -196,7 +212,7 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
 }
 
 void MeshHierarchy::refit(const Mesh& mesh) {
-  onHullBoundary_ = liesOnHullBoundary(mesh);  // a deformation may dent a convex mesh
+  onHullBoundary_ = isClosedConvex(mesh);  // a deformation may dent a convex mesh
   // Children come after their parent in nodes_, so a backward sweep sees children first.
   for (std::size_t i = nodes_.size(); i-- > 0;) {
     // The axes stay; the extents are fitted anew (to the leaf's vertices, or to the corners of

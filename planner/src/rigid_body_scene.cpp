@@ -1,8 +1,13 @@
 #include "adsd/planner/rigid_body_scene.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
+#include <unordered_map>
 #include <utility>
+
+#include "adsd/mesh_hierarchy.h"
 
 namespace adsd::planner {
 
@@ -75,6 +80,99 @@ void cutIntoPieces(const Mesh& mesh, TriangleList triangles, double maxDiagonal,
   cutIntoPieces(mesh, std::move(second), maxDiagonal, pieces);
 }
 
+/// Whether the component \p triangles of \p mesh is kept whole: a small convex solid's boundary
+/// (adsd::isClosedConvex: a box obstacle, a wall, a primitive cylinder) too thin for the robot
+/// to fit inside (its width across some face, the largest height of a vertex above that face's
+/// plane, is at most \p maxDiagonal, the robot's size). Such a component's hull holds no valid
+/// robot pose, which is what cutting is for; cut, its pieces would be open, and the distance
+/// query's answer for two convex meshes (GJK on their vertices, adsd/src/convex_pair.cpp) would
+/// no longer hold for them. A room's shell, convex too, is as wide as the room: it is cut.
+bool keptWhole(const Mesh& mesh, const TriangleList& triangles, double maxDiagonal) {
+  // A closed convex polyhedron of V vertices has at most 2V - 4 triangles.
+  if (triangles.size() > 2 * MeshHierarchy::kConvexCheckVertices) return false;
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> indices;
+  std::unordered_map<std::uint32_t, std::uint32_t> index;
+  for (std::size_t t : triangles) {
+    TriangleIndices out{};
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = mesh.triangles()[t][k];
+      const auto [at, added] = index.emplace(v, static_cast<std::uint32_t>(vertices.size()));
+      if (added) vertices.push_back(mesh.vertices()[v]);
+      out[k] = at->second;
+    }
+    indices.push_back(out);
+  }
+  const Mesh component(std::move(vertices), std::move(indices), mesh.name());
+  if (!isClosedConvex(component)) return false;
+  double width = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < component.triangleCount(); ++t) {
+    const Vec3 a = component.corner(t, 0);
+    const Vec3 n = (component.corner(t, 1) - a).cross(component.corner(t, 2) - a);
+    const double length = n.norm();
+    if (!(length > 0.0)) continue;
+    double height = 0.0;
+    for (const Vec3& v : component.vertices()) height = std::max(height, std::abs(n.dot(v - a)) / length);
+    width = std::min(width, height);
+  }
+  return width <= maxDiagonal;
+}
+
+/// \p triangles (a component of \p mesh) in patches joined only through edges that exactly two
+/// triangles share. Boxes that touch at a corner, an edge or a face, which a loader merging
+/// identical vertices joined into one component (the office's desks), come apart into boxes:
+/// the edges where they meet belong to four triangles.
+std::vector<TriangleList> manifoldPatches(const Mesh& mesh, const TriangleList& triangles) {
+  std::vector<std::size_t> parent(triangles.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  auto root = [&parent](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  // (edge, triangle) sorted by edge: the triangles of one edge are neighbours in the list.
+  std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::size_t>> edges;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const TriangleIndices& t = mesh.triangles()[triangles[i]];
+    for (int k = 0; k < 3; ++k) edges.push_back({std::minmax(t[k], t[(k + 1) % 3]), i});
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t first = 0; first < edges.size();) {
+    std::size_t last = first;
+    while (last < edges.size() && edges[last].first == edges[first].first) ++last;
+    if (last - first == 2) parent[root(edges[first].second)] = root(edges[first + 1].second);
+    first = last;
+  }
+  std::vector<std::int64_t> patchOfRoot(triangles.size(), -1);
+  std::vector<TriangleList> patches;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const std::size_t r = root(i);
+    if (patchOfRoot[r] < 0) {
+      patchOfRoot[r] = static_cast<std::int64_t>(patches.size());
+      patches.emplace_back();
+    }
+    patches[static_cast<std::size_t>(patchOfRoot[r])].push_back(triangles[i]);
+  }
+  return patches;
+}
+
+/// Appends \p component's pieces: itself when it is kept whole (keptWhole), its patches when it
+/// is such solids touching (manifoldPatches), else cutIntoPieces' pieces.
+void piecesOfComponent(const Mesh& mesh, TriangleList component, double maxDiagonal,
+                       std::vector<TriangleList>& pieces) {
+  if (keptWhole(mesh, component, maxDiagonal)) {
+    pieces.push_back(std::move(component));
+    return;
+  }
+  std::vector<TriangleList> patches = manifoldPatches(mesh, component);
+  if (patches.size() > 1 && std::all_of(patches.begin(), patches.end(), [&](const TriangleList& patch) {
+        return keptWhole(mesh, patch, maxDiagonal);
+      })) {
+    for (TriangleList& patch : patches) pieces.push_back(std::move(patch));
+    return;
+  }
+  cutIntoPieces(mesh, std::move(component), maxDiagonal, pieces);
+}
+
 /// Groups \p pieces (indices into \p centres) into exactly min(groups, pieces) spatially compact
 /// groups, by median splits of their centres.
 void groupPieces(std::vector<std::size_t> pieces, std::size_t groups, const std::vector<Vec3>& centres,
@@ -117,7 +215,7 @@ std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts, double 
   // Large components cut into pieces: a room, a maze or a box the robot sits in has a convex hull
   // that holds the robot, so no hull-based bound can separate them; its pieces' hulls can.
   std::vector<TriangleList> pieces;
-  for (TriangleList& c : components) cutIntoPieces(mesh, std::move(c), maxPieceDiagonal, pieces);
+  for (TriangleList& c : components) piecesOfComponent(mesh, std::move(c), maxPieceDiagonal, pieces);
   if (pieces.size() <= 1) return {mesh};
 
   // Too many pieces: spatially compact groups of them (median splits of the pieces' centres).

@@ -68,7 +68,8 @@ Pose placedAlong(const Mesh& a, const Mesh& b, const Eigen::Quaterniond& rotatio
 TEST(ConvexPairs, SmallClosedConvexMeshesAreOnTheirHullsAndOthersAreNot) {
   EXPECT_TRUE(withTree(shapes::box(Vec3(1, 2, 3))).hierarchy()->onHullBoundary());
   EXPECT_TRUE(withTree(shapes::sphere(0.5, 8)).hierarchy()->onHullBoundary());
-  EXPECT_TRUE(withTree(openBox(1.0)).hierarchy()->onHullBoundary());
+  EXPECT_TRUE(withTree(shapes::sphere(0.5, 16)).hierarchy()->onHullBoundary());
+  EXPECT_FALSE(withTree(openBox(1.0)).hierarchy()->onHullBoundary());  // not closed
   EXPECT_FALSE(withTree(shapes::torus(1.0, 0.3, 8, 6)).hierarchy()->onHullBoundary());
   EXPECT_FALSE(withTree(shapes::cShape(1.0, 0.25, 0.9, 8)).hierarchy()->onHullBoundary());
   // Convex, but past the size that is checked (kConvexCheckVertices).
@@ -86,6 +87,8 @@ std::vector<ConvexCase> convexCases() {
       {"plate and box", withTree(shapes::box(Vec3(2, 0.01, 1.5))), withTree(shapes::box(Vec3(0.5, 0.1, 0.1)))},
       {"sphere and box", withTree(shapes::sphere(0.7, 8)), withTree(shapes::box(Vec3(0.2, 0.4, 0.3)))},
       {"sphere and sphere", withTree(shapes::sphere(0.7, 8)), withTree(shapes::sphere(0.3, 6))},
+      // Rounder: 114 and 62 vertices, where only triangles at the support planes are measured.
+      {"round and round", withTree(shapes::sphere(0.6, 16)), withTree(shapes::sphere(0.4, 12))},
   };
 }
 

@@ -11,6 +11,7 @@
 
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
+#include "adsd/mesh_hierarchy.h"
 #include "adsd/planner/features.h"
 #if ADSD_PLANNER_HAS_FCL
 #include "adsd/planner/fcl_validity_checker.h"
@@ -223,6 +224,48 @@ TEST(SplitIntoParts, KeepsEveryTriangleOnce) {
     EXPECT_EQ(triangles, office.triangleCount());
     EXPECT_TRUE(box.isApprox(office.bounds()));
   }
+}
+
+/// \p mesh with vertices at identical positions made one (as a loader that joins identical
+/// vertices reads touching boxes).
+Mesh welded(const Mesh& mesh) {
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+  std::vector<std::uint32_t> index(mesh.vertices().size());
+  for (std::size_t v = 0; v < mesh.vertices().size(); ++v) {
+    std::size_t same = 0;
+    while (same < vertices.size() && vertices[same] != mesh.vertices()[v]) ++same;
+    if (same == vertices.size()) vertices.push_back(mesh.vertices()[v]);
+    index[v] = static_cast<std::uint32_t>(same);
+  }
+  for (const TriangleIndices& t : mesh.triangles()) triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+  return Mesh(std::move(vertices), std::move(triangles), mesh.name());
+}
+
+// Walls and boxes are their own hulls: a wall thinner than the piece size stays whole however
+// long (cut, its pieces would be open boxes), and boxes touching at shared corners come apart
+// into boxes; a box as wide as the pieces are large could hold the robot, and is cut.
+TEST(SplitIntoParts, KeepsThinConvexSolidsWholeAndSeparatesTouchingOnes) {
+  const Mesh wall = shapes::box(Vec3(5, 0.1, 1));  // 10 long, 0.2 thick
+  std::vector<Mesh> parts = splitIntoParts(wall, 1000, 1.5);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_TRUE(isClosedConvex(parts[0]));
+
+  // A desk: a top resting on two legs, a corner of each shared (welded; binary fractions, so
+  // that the corners coincide exactly), and a wide block.
+  const Mesh desk = welded(shapes::merge({shapes::box(Vec3(1, 0.5, 0.125)), shapes::box(Vec3(0.125, 0.125, 0.375)),
+                                          shapes::box(Vec3(0.125, 0.125, 0.375))},
+                                         {Pose(Eigen::Translation3d(0, 0, 0.875)),
+                                          Pose(Eigen::Translation3d(-0.875, -0.375, 0.375)),
+                                          Pose(Eigen::Translation3d(0.875, 0.375, 0.375))}));
+  ASSERT_LT(desk.vertices().size(), 24u) << "the legs' top corners are the top's";
+  parts = splitIntoParts(desk, 1000, 1.5);
+  ASSERT_EQ(parts.size(), 3u);
+  for (const Mesh& p : parts) EXPECT_TRUE(isClosedConvex(p)) << p.name();
+
+  const Mesh block = shapes::box(Vec3(2, 2, 2));
+  parts = splitIntoParts(block, 1000, 1.5);
+  EXPECT_GT(parts.size(), 1u);
 }
 
 TEST(SplitIntoParts, CutsASurroundingRoomIntoPiecesOfTheGivenSize) {

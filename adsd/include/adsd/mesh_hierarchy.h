@@ -41,9 +41,10 @@ class MeshHierarchy {
   /// segments turns 11.25 degrees per strip and a fine scanned mesh less still.
   static constexpr double kFoldCosine = 0.5;
   /// Meshes of at most this many vertices are checked for lying on their convex hull's boundary
-  /// (onHullBoundary): a box obstacle or robot part (8), a primitive cylinder or a convex part
-  /// of a decomposed model. The check costs triangles x vertices, once per tree.
-  static constexpr std::size_t kConvexCheckVertices = 64;
+  /// (onHullBoundary): a box obstacle or robot part (8), a primitive cylinder, the bug trap's
+  /// round robot (130), a convex part of a decomposed model. The check costs triangles x vertices
+  /// (at most about 1.3e5 products) when the tree is built or refitted.
+  static constexpr std::size_t kConvexCheckVertices = 256;
 
   struct Node {
     /// Bounds of the node's vertices, mesh frame: oriented along their principal axes, which fit
@@ -83,12 +84,12 @@ class MeshHierarchy {
   const std::vector<std::uint32_t>& leafVertices() const { return leafVertices_; }
   /// \brief Bytes kept between queries (for the memory figure of issue 6).
   std::size_t bytes() const;
-  /// \brief Whether the mesh is small (kConvexCheckVertices) and every triangle's plane has all
-  /// its vertices on one side: its triangles then lie on its convex hull's boundary (a box, a
-  /// convex part). Between two such meshes the distance is usually their hulls' (GJK on the
-  /// vertices), and queries try that first (convex_pair.cpp), which proves or rejects it; an open
-  /// box also passes, and only costs that try.
-  bool onHullBoundary() const { return onHullBoundary_; }
+  /// \brief Whether the mesh is small (kConvexCheckVertices), closed (every edge in two
+  /// triangles) and every triangle's plane has all its vertices on one side: it is then its
+  /// convex hull's boundary (a box, a convex part). Between two such meshes the distance is their
+  /// hulls' while the hulls are apart (GJK on the vertices), and queries try that first
+  /// (convex_pair.cpp), which proves it or leaves the query to the traversal.
+  bool onHullBoundary() const { return onHullBoundary_; }  // isClosedConvex(mesh)
 
  private:
   std::int32_t build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, std::vector<std::uint32_t>& marks);
@@ -98,5 +99,11 @@ class MeshHierarchy {
   std::vector<std::uint32_t> leafVertices_;
   bool onHullBoundary_ = false;
 };
+
+/// \brief Whether \p mesh has at most MeshHierarchy::kConvexCheckVertices vertices, is closed
+/// (every edge, by vertex index, in exactly two triangles) and every triangle with an area has all
+/// vertices on one side of its plane (up to 1e-9 of the mesh's extent): the boundary of a convex
+/// solid, such as a box or a primitive cylinder. False for larger meshes, which are not checked.
+bool isClosedConvex(const Mesh& mesh);
 
 }  // namespace adsd

@@ -58,7 +58,10 @@ inline constexpr double kPieceDiagonalPerRobotDiameter = 1.0;
 
 /// \brief Splits \p mesh into parts for the checkers' broad phase: its connected components
 /// (triangles sharing a vertex index), each cut (median splits of its triangles' centroids) into
-/// pieces whose boxes have a diagonal of at most \p maxPieceDiagonal; when there are more than
+/// pieces whose boxes have a diagonal of at most \p maxPieceDiagonal, except small convex ones
+/// too thin to hold the robot (adsd::isClosedConvex, no wider than \p maxPieceDiagonal across a
+/// face: a box obstacle, a wall), which stay whole, and components of such solids touching
+/// (joined at shared corners), which are split into them along the edges where they meet; when there are more than
 /// \p maxParts pieces, spatially neighbouring pieces are grouped into \p maxParts parts. Every
 /// triangle ends up in exactly one part, so the distance to the parts' union is the distance to
 /// the mesh.
