@@ -4,8 +4,8 @@
 // support planes' gap, eq. 4-5) and the hulls' nearest points. Both meshes lie on their hulls'
 // boundaries, so when the hulls are apart those points lie on the surfaces: the triangle pair
 // carrying them measures the answer, and the lower bound proves that no pair is nearer. Where
-// the proof fails (hulls that touch, a mesh that is not closed, a bound the roundoff leaves
-// short), the traversal answers as before, starting from the upper bound found here.
+// the proof fails (hulls that touch: contact, or one mesh inside the other; a bound the roundoff
+// leaves short), the traversal answers as before, starting from the upper bound found here.
 
 #include <cstdint>
 #include <limits>
@@ -103,9 +103,8 @@ bool Query::settleConvexPair() {
   if (g.outcome == GjkOutcome::skipped) return true;
   offer(g.closest);  // support vertices: a real distance, whatever follows
   if (g.outcome != GjkOutcome::separated) return false;  // the hulls touch: contact, or one inside
-  // The hulls' nearest points lie on both surfaces (each mesh is on its hull's boundary), so the
-  // triangles nearest to them carry them; their distance is the hulls' up to roundoff, unless a
-  // mesh has a hole where its hull is nearest (then the traversal below decides).
+  // The hulls' nearest points lie on both surfaces (each mesh is its hull's boundary), so the
+  // triangles nearest to them carry them, and their distance is the hulls' up to roundoff.
   // g.direction points from A towards B: A's support plane along it, B's along its opposite
   // (in B's frame). The slack covers the roundoff of the supports and of GJK's last direction.
   const double slack = 1e-9 * magnitude_ + roundoff_;

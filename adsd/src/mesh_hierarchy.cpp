@@ -121,8 +121,9 @@ bool isClosed(const Mesh& mesh) {
 
 }  // namespace
 
-// O(triangles x vertices), hence only for small meshes. Closed, because a hole where the hull is nearest (a wall cut in two by a planner's scene
-/// splitter, an open box) leaves the hulls nearer than the surfaces and GJK's try is lost.
+// O(triangles x vertices), hence only for small meshes. Closed, because a hole where the hull is
+// nearest (a wall cut in two by a planner's scene splitter, an open box) leaves the hulls nearer
+// than the surfaces, and a query's try of GJK on the vertices (convex_pair.cpp) would be lost.
 bool isClosedConvex(const Mesh& mesh) {
   const std::vector<Vec3>& vertices = mesh.vertices();
   if (vertices.empty() || vertices.size() > MeshHierarchy::kConvexCheckVertices || !isClosed(mesh)) return false;
