@@ -154,9 +154,6 @@ paste_results() {
     /usr/bin/python3 bench/paste_results.py "$page" clearance \
       "bench/planning/clearance_query_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --seeds 5 --time 2" \
       bench/results/clearance_queries.md "${paired[@]}"
-    /usr/bin/python3 bench/paste_results.py README.md headline_clearance \
-      "bench/planning/clearance_query_ratios.py --adsd $build/planner/app/adsd --problems $build/problem_files --seeds 5 --time 2" \
-      bench/results/clearance_queries.md
   fi
   if [[ -f bench/results/planning_control.md ]]; then
     planning_tables planning_control planning_control_hard
