@@ -108,8 +108,9 @@ bool Query::settleConvexPair() {
   // g.direction points from A towards B: A's support plane along it, B's along its opposite
   // (in B's frame). The slack covers the roundoff of the supports and of GJK's last direction.
   const double slack = 1e-9 * magnitude_ + roundoff_;
+  // B's reach towards A in its own frame follows from GJK's minB (= min over B of n.(R b + t)).
   const Vec3 towardsB = g.direction, towardsAInB = -(rotationAB_ * g.direction);
-  const double reachB = towardsAInB.dot(verticesB[supportVertex(verticesB, towardsAInB)]);
+  const double reachB = g.direction.dot(translationBA_) - g.minB;
   const std::uint32_t triangleA = nearestTriangle(a_, g.onA, towardsB, g.maxA, slack);
   const std::uint32_t triangleB =
       nearestTriangle(b_, rotationAB_ * (g.onB - translationBA_), towardsAInB, reachB, slack);

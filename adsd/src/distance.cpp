@@ -245,8 +245,6 @@ DistanceResult Query::run() {
     // would work out per query, so every mode runs the box-and-triangle traversal of
     // tree_traversal.cpp (sec. 6.2's rejection rule on node pairs), with GJK kept for node pairs
     // far apart for their size (the hull bound).
-    // A validity query on trees measures the hint only once its roots are found near enough
-    // (traverseTrees): most such queries end at the roots, for less than one triangle pair.
     // Two small convex parts (a box robot against box obstacles, one pair at a time in a
     // planner's checker): GJK on their vertices usually settles an exact, cap or tolerance query
     // by itself, with one triangle pair (convex_pair.cpp). A validity query between them ends at
@@ -255,6 +253,8 @@ DistanceResult Query::run() {
         settleConvexPair()) {
       return remember(finish());
     }
+    // A validity query on trees measures the hint only once its roots are found near enough
+    // (traverseTrees): most such queries end at the roots, for less than one triangle pair.
     if (options_.mode != QueryMode::threshold) startFromWitnessHint();
     if (!done_) traverseTrees();
     return remember(finish());

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
 #include <utility>
 
 #include "adsd/mesh_hierarchy.h"
@@ -80,6 +79,44 @@ void cutIntoPieces(const Mesh& mesh, TriangleList triangles, double maxDiagonal,
   cutIntoPieces(mesh, std::move(second), maxDiagonal, pieces);
 }
 
+/// Makes meshes of some of a mesh's triangles, each keeping only the vertices its triangles use
+/// (a vertex shared by two of them is copied into each). One per split: its vertex map, one
+/// entry per vertex of the whole mesh, is made once.
+class PartBuilder {
+ public:
+  explicit PartBuilder(const Mesh& mesh) : mesh_(mesh), remap_(mesh.vertices().size(), -1) {}
+
+  void add(const TriangleList& triangles) {
+    for (std::size_t t : triangles) {
+      TriangleIndices out{};
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = mesh_.triangles()[t][k];
+        if (remap_[v] < 0) {
+          remap_[v] = static_cast<std::int64_t>(vertices_.size());
+          vertices_.push_back(mesh_.vertices()[v]);
+          used_.push_back(v);
+        }
+        out[k] = static_cast<std::uint32_t>(remap_[v]);
+      }
+      triangles_.push_back(out);
+    }
+  }
+
+  /// The mesh of everything added since the last take().
+  Mesh take(std::string name) {
+    for (std::uint32_t v : used_) remap_[v] = -1;
+    used_.clear();
+    return Mesh(std::exchange(vertices_, {}), std::exchange(triangles_, {}), std::move(name));
+  }
+
+ private:
+  const Mesh& mesh_;
+  std::vector<std::int64_t> remap_;
+  std::vector<std::uint32_t> used_;
+  std::vector<Vec3> vertices_;
+  std::vector<TriangleIndices> triangles_;
+};
+
 /// Whether the component \p triangles of \p mesh is kept whole: a small convex solid's boundary
 /// (adsd::isClosedConvex: a box obstacle, a wall, a primitive cylinder) too thin for the robot
 /// to fit inside (its width across some face, the largest height of a vertex above that face's
@@ -87,23 +124,11 @@ void cutIntoPieces(const Mesh& mesh, TriangleList triangles, double maxDiagonal,
 /// robot pose, which is what cutting is for; cut, its pieces would be open, and the distance
 /// query's answer for two convex meshes (GJK on their vertices, adsd/src/convex_pair.cpp) would
 /// no longer hold for them. A room's shell, convex too, is as wide as the room: it is cut.
-bool keptWhole(const Mesh& mesh, const TriangleList& triangles, double maxDiagonal) {
+bool keptWhole(const TriangleList& triangles, double maxDiagonal, PartBuilder& builder) {
   // A closed convex polyhedron of V vertices has at most 2V - 4 triangles.
   if (triangles.size() > 2 * MeshHierarchy::kConvexCheckVertices) return false;
-  std::vector<Vec3> vertices;
-  std::vector<TriangleIndices> indices;
-  std::unordered_map<std::uint32_t, std::uint32_t> index;
-  for (std::size_t t : triangles) {
-    TriangleIndices out{};
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t v = mesh.triangles()[t][k];
-      const auto [at, added] = index.emplace(v, static_cast<std::uint32_t>(vertices.size()));
-      if (added) vertices.push_back(mesh.vertices()[v]);
-      out[k] = at->second;
-    }
-    indices.push_back(out);
-  }
-  const Mesh component(std::move(vertices), std::move(indices), mesh.name());
+  builder.add(triangles);
+  const Mesh component = builder.take("component");
   if (!isClosedConvex(component)) return false;
   double width = std::numeric_limits<double>::infinity();
   for (std::size_t t = 0; t < component.triangleCount(); ++t) {
@@ -157,15 +182,15 @@ std::vector<TriangleList> manifoldPatches(const Mesh& mesh, const TriangleList& 
 
 /// Appends \p component's pieces: itself when it is kept whole (keptWhole), its patches when it
 /// is such solids touching (manifoldPatches), else cutIntoPieces' pieces.
-void piecesOfComponent(const Mesh& mesh, TriangleList component, double maxDiagonal,
+void piecesOfComponent(const Mesh& mesh, TriangleList component, double maxDiagonal, PartBuilder& builder,
                        std::vector<TriangleList>& pieces) {
-  if (keptWhole(mesh, component, maxDiagonal)) {
+  if (keptWhole(component, maxDiagonal, builder)) {
     pieces.push_back(std::move(component));
     return;
   }
   std::vector<TriangleList> patches = manifoldPatches(mesh, component);
   if (patches.size() > 1 && std::all_of(patches.begin(), patches.end(), [&](const TriangleList& patch) {
-        return keptWhole(mesh, patch, maxDiagonal);
+        return keptWhole(patch, maxDiagonal, builder);
       })) {
     for (TriangleList& patch : patches) pieces.push_back(std::move(patch));
     return;
@@ -215,7 +240,8 @@ std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts, double 
   // Large components cut into pieces: a room, a maze or a box the robot sits in has a convex hull
   // that holds the robot, so no hull-based bound can separate them; its pieces' hulls can.
   std::vector<TriangleList> pieces;
-  for (TriangleList& c : components) piecesOfComponent(mesh, std::move(c), maxPieceDiagonal, pieces);
+  PartBuilder builder(mesh);
+  for (TriangleList& c : components) piecesOfComponent(mesh, std::move(c), maxPieceDiagonal, builder, pieces);
   if (pieces.size() <= 1) return {mesh};
 
   // Too many pieces: spatially compact groups of them (median splits of the pieces' centres).
@@ -231,28 +257,9 @@ std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts, double 
   }
 
   std::vector<Mesh> parts;
-  std::vector<std::int64_t> remap(mesh.vertices().size(), -1);
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    std::vector<Vec3> vertices;
-    std::vector<TriangleIndices> triangles;
-    std::vector<std::uint32_t> used;
-    for (std::size_t p : groups[g]) {
-      for (std::size_t t : pieces[p]) {
-        TriangleIndices out{};
-        for (int k = 0; k < 3; ++k) {
-          const std::uint32_t v = mesh.triangles()[t][k];
-          if (remap[v] < 0) {
-            remap[v] = static_cast<std::int64_t>(vertices.size());
-            vertices.push_back(mesh.vertices()[v]);
-            used.push_back(v);
-          }
-          out[k] = static_cast<std::uint32_t>(remap[v]);
-        }
-        triangles.push_back(out);
-      }
-    }
-    for (std::uint32_t v : used) remap[v] = -1;  // a vertex shared by two pieces is copied into each
-    parts.emplace_back(std::move(vertices), std::move(triangles), mesh.name() + " part " + std::to_string(g));
+    for (std::size_t p : groups[g]) builder.add(pieces[p]);
+    parts.push_back(builder.take(mesh.name() + " part " + std::to_string(g)));
   }
   return parts;
 }

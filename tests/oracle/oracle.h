@@ -62,6 +62,18 @@ bool trianglesIntersect(const Quad3& a0, const Quad3& a1, const Quad3& a2, const
 /// \brief The corners of triangle t of \p mesh placed by \p pose, in binary128.
 std::array<Quad3, 3> posedTriangle(const Mesh& mesh, const Pose& pose, std::size_t t);
 
+/// \brief The accuracy every exact answer owes (issue 2): this times sceneDiagonal().
+inline constexpr double kPromisedAccuracy = 1e-10;
+
+/// \brief The diagonal of the box around both meshes as placed: the length the accuracy
+/// promise is relative to.
+inline double sceneDiagonal(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB) {
+  Eigen::AlignedBox3d box;
+  for (const Vec3& v : a.vertices()) box.extend(poseA * v);
+  for (const Vec3& v : b.vertices()) box.extend(poseB * v);
+  return box.diagonal().norm();
+}
+
 /// \brief Brute-force mesh-mesh minimum distance.
 struct MeshPairDistance {
   Quad distance = 0;

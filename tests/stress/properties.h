@@ -13,12 +13,13 @@
 #include <vector>
 
 #include "adsd/distance.h"
+#include "oracle.h"
 #include "stress_case.h"
 
 namespace adsd::stress {
 
 /// Accuracy promised by issues 2 and 3, relative to the scene's bounding-box diagonal.
-inline constexpr double kAccuracy = 1e-10;
+inline constexpr double kAccuracy = oracle::kPromisedAccuracy;
 /// The magnitude of the numbers a query computes with: what distance.h's accuracy bound
 /// (kAccuracy x diagonal + tolerance::kBoundSafetyUlps x eps x this) is relative to. The largest
 /// coordinate of either mesh in its own frame (sqrt 3 x the largest |coordinate|) plus the

@@ -4,14 +4,11 @@
 #include <cstdio>
 #include <sstream>
 
+#include "oracle.h"
+
 namespace adsd::stress {
 
-double sceneDiagonal(const StressCase& c) {
-  Eigen::AlignedBox3d box;
-  for (const Vec3& v : c.a.vertices()) box.extend(c.poseA * v);
-  for (const Vec3& v : c.b.vertices()) box.extend(c.poseB * v);
-  return box.diagonal().norm();
-}
+double sceneDiagonal(const StressCase& c) { return oracle::sceneDiagonal(c.a, c.poseA, c.b, c.poseB); }
 
 double worldMagnitude(const StressCase& c) {
   double m = 0.0;
