@@ -172,7 +172,7 @@ void Query::traverseTrees() {
     counters_.maxDepth = std::max(counters_.maxDepth, depth);
     BoxPairBound boxes = placedB ? boxLowerBound(nodesA[a].box, *placedB, bound)
                                  : boxLowerBound(nodesB[b].box, *placedA, bound);
-    if (boxes.lower > bound) {
+    if (boxes.apart) {
       ++counters_.pairsRejectedByBounds;
       dropped();
       return false;
