@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -63,9 +64,14 @@ struct TimedMethod {
 /// \brief Runs every method once on each of \p caseCount cases, \p rounds times, interleaved.
 ///
 /// On case i of round r the methods run back to back starting at method (i + r) mod m, so every
-/// method runs first, second, ... equally often (cache warmth from the previous method is shared
-/// out evenly). Before timing, each method runs untimed on the first \p warmupCases cases:
-/// scratch memory grows, code and data reach the caches.
+/// method runs first equally often, the others after it in a seeded random order, so that the
+/// method run just before each one varies and the cache warmth it leaves is shared out evenly. (In
+/// a fixed cyclic order every method had the same predecessor on most cases: bench_bands' 1 %
+/// tolerance query always ran right after the exact query of the same pose, on nodes that query
+/// had just brought into cache, and read 0.72-0.77 of it near contact instead of 0.83-0.99:
+/// bench_bands --scenes cows,camels,problem_bug_trap --bands near, both orders.)
+/// Before timing, each method runs untimed on the first \p warmupCases cases: scratch memory
+/// grows, code and data reach the caches.
 ///
 /// \p prepare, when given, runs untimed before the methods on each case (and each warm-up case):
 /// the place for work that belongs to the case, not to any method, such as computing a deforming
@@ -84,11 +90,15 @@ inline void runInterleaved(std::vector<TimedMethod>& methods, std::size_t caseCo
       if (!method.appliesTo || method.appliesTo(i)) method.run(i);
     }
   }
+  std::vector<std::size_t> order(m);
+  std::mt19937_64 shuffler(0x5eed);  // fixed: a command times the same orders on every run
   for (int round = 0; round < rounds; ++round) {
     for (std::size_t i = 0; i < caseCount; ++i) {
       if (prepare) prepare(i);
+      for (std::size_t k = 0; k < m; ++k) order[k] = (i + static_cast<std::size_t>(round) + k) % m;
+      std::shuffle(order.begin() + 1, order.end(), shuffler);
       for (std::size_t k = 0; k < m; ++k) {
-        TimedMethod& method = methods[(i + static_cast<std::size_t>(round) + k) % m];
+        TimedMethod& method = methods[order[k]];
         if (method.appliesTo && !method.appliesTo(i)) continue;
         method.micros.push_back(microsecondsOf([&] { method.run(i); }));
       }
