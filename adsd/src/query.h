@@ -38,13 +38,6 @@ struct PendingNodePair {
   double nearness;  // how near the pair looks: the order among equal lower bounds (traverseTrees)
 };
 
-/// A tree node waiting in a support search (Query::nodeSupport), with its box's reach along the
-/// search direction.
-struct NodeReach {
-  std::int32_t node;
-  double reach;
-};
-
 /// Where the last query between two meshes found its answer: the triangles of its witnesses.
 /// A planner's consecutive queries between the same meshes are near each other, so that pair's
 /// distance at the new poses is an upper bound close to the new answer before any node pair is
@@ -67,8 +60,6 @@ struct DistanceScratch::Buffers {
   }
   // The traversal's pending node pairs: a stack for validity queries, a heap for the others.
   std::vector<PendingNodePair> pendingNodePairs;
-  // Branch and bound over a subtree for a node's support point.
-  std::vector<NodeReach> supportStack;
   // Sub-meshes are ranges of these permutations of the triangle indices; the recursion partitions
   // them in place (depth first, so a range holds the same set whenever it is revisited).
   std::vector<std::uint32_t> orderA, orderB;
@@ -151,7 +142,7 @@ class Query {
   /// searched from \p warm (a point of the node's, mesh frame); the result names a triangle of
   /// the node's that has it as a corner.
   static SupportPoint nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
-                                  SupportPoint warm, std::vector<NodeReach>& stack);
+                                  SupportPoint warm);
   /// Both meshes small and on their hulls' boundaries (MeshHierarchy::onHullBoundary): GJK on
   /// all their vertices, to convergence, and the triangle pair at the hulls' nearest points
   /// (convex_pair.cpp). True when that settles the query (the support planes' gap proves the

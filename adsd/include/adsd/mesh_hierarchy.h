@@ -36,6 +36,10 @@ class MeshHierarchy {
  public:
   /// Leaves hold at most this many triangles: below it a GJK run costs more than direct tests.
   static constexpr std::uint32_t kLeafTriangles = 4;
+  /// No path from the root to a leaf has more nodes than this: each split halves a node's
+  /// triangles (the median), and a mesh has fewer than 2^32 of them, so below the root at most 30
+  /// halvings reach kLeafTriangles. Searches down the tree keep a fixed stack of this size.
+  static constexpr int kMaxTreeLevels = 32;
   /// A leaf is folded when two of its triangles' normals are more than this apart (cosine 0.5,
   /// 60 degrees): the faces of a box meet at 90, a plate's sides at 180, while a capsule of 32
   /// segments turns 11.25 degrees per strip and a fine scanned mesh less still.
