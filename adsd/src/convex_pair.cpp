@@ -1,5 +1,7 @@
 // Two small convex meshes (MeshHierarchy::onHullBoundary: a box robot against box obstacles, the
-// parts a planner's checker queries one by one): GJK on their vertices (paper sec. 4) run to
+// parts a planner's checker queries one by one), or two tree nodes that are closed convex
+// components of their meshes (MeshHierarchy::Node::convexSolid: the boxes of an environment
+// given as one mesh, met by the traversal): GJK on their vertices (paper sec. 4) run to
 // convergence gives the hulls' distance, with a lower bound along the last direction (the
 // support planes' gap, eq. 4-5) and the hulls' nearest points. Both meshes lie on their hulls'
 // boundaries, so when the hulls are apart those points lie on the surfaces: the triangle pair
@@ -45,15 +47,18 @@ double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const
   return (ap - (vb / denominator) * ab - (vc / denominator) * ac).squaredNorm();
 }
 
-/// The triangle of \p mesh nearest to \p p (mesh frame), a point on the mesh's hull in its support
-/// plane along \p d (the vertices' largest d.x is \p reach). Only triangles with a corner within
-/// \p slack of that plane are measured: a triangle that holds p has one there (it lies in the
-/// plane, or meets it at p's edge or vertex), and on a round mesh they are a handful.
-std::uint32_t nearestTriangle(const Mesh& mesh, const Vec3& p, const Vec3& d, double reach, double slack) {
-  std::uint32_t nearest = 0;
+/// The triangle nearest to \p p (mesh frame) among triangles order[t0, t1) of \p mesh (all of
+/// them, by index, when \p order is null), \p p being a point on their hull in its support plane
+/// along \p d (the vertices' largest d.x is \p reach). Only triangles with a corner within \p slack
+/// of that plane are measured: a triangle that holds p has one there (it lies in the plane, or
+/// meets it at p's edge or vertex), and on a round mesh they are a handful.
+std::uint32_t nearestTriangle(const Mesh& mesh, const std::uint32_t* order, std::uint32_t t0, std::uint32_t t1,
+                              const Vec3& p, const Vec3& d, double reach, double slack) {
+  std::uint32_t nearest = order ? order[t0] : t0;
   double nearest2 = std::numeric_limits<double>::infinity();
   const double plane = reach - slack;
-  for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
+  for (std::uint32_t i = t0; i < t1; ++i) {
+    const std::uint32_t t = order ? order[i] : i;
     const Vec3 a = mesh.corner(t, 0), b = mesh.corner(t, 1), c = mesh.corner(t, 2);
     if (d.dot(a) < plane && d.dot(b) < plane && d.dot(c) < plane) continue;
     const double d2 = pointTriangleDistance2(p, a, b, c);
@@ -105,24 +110,61 @@ bool Query::settleConvexPair() {
   if (g.outcome != GjkOutcome::separated) return false;  // the hulls touch: contact, or one inside
   // The hulls' nearest points lie on both surfaces (each mesh is its hull's boundary), so the
   // triangles nearest to them carry them, and their distance is the hulls' up to roundoff.
-  // g.direction points from A towards B: A's support plane along it, B's along its opposite
-  // (in B's frame). The slack covers the roundoff of the supports and of GJK's last direction.
+  measureAtHullPoints(g, nullptr, 0, static_cast<std::uint32_t>(a_.triangleCount()), nullptr, 0,
+                      static_cast<std::uint32_t>(b_.triangleCount()));
+  // Every point of either mesh lies within its hull, so no triangle pair is nearer than the
+  // support planes' gap g.lower, up to the roundoff of the dot products behind it (the same
+  // allowance the traversal's bounds carry). The answer is then the pair just measured.
+  return best_ - g.lower <= roundoff_ || skip(g.lower - roundoff_);
+}
+
+void Query::measureAtHullPoints(const GjkResult& g, const std::uint32_t* orderA, std::uint32_t a0, std::uint32_t a1,
+                                const std::uint32_t* orderB, std::uint32_t b0, std::uint32_t b1) {
+  // g.direction points from A towards B: A's support plane along it, B's along its opposite (in
+  // B's frame). The slack covers the roundoff of the supports and of GJK's last direction. B's
+  // reach towards A in its own frame follows from GJK's minB (= min over B of n.(R b + t)).
   const double slack = 1e-9 * magnitude_ + roundoff_;
-  // B's reach towards A in its own frame follows from GJK's minB (= min over B of n.(R b + t)).
   const Vec3 towardsB = g.direction, towardsAInB = -(rotationAB_ * g.direction);
   const double reachB = g.direction.dot(translationBA_) - g.minB;
-  const std::uint32_t triangleA = nearestTriangle(a_, g.onA, towardsB, g.maxA, slack);
+  const std::uint32_t triangleA = nearestTriangle(a_, orderA, a0, a1, g.onA, towardsB, g.maxA, slack);
   const std::uint32_t triangleB =
-      nearestTriangle(b_, rotationAB_ * (g.onB - translationBA_), towardsAInB, reachB, slack);
+      nearestTriangle(b_, orderB, b0, b1, rotationAB_ * (g.onB - translationBA_), towardsAInB, reachB, slack);
   const TrianglePairResult t = triangleDistance(a_.corner(triangleA, 0), a_.corner(triangleA, 1),
                                                 a_.corner(triangleA, 2), toA(b_.corner(triangleB, 0)),
                                                 toA(b_.corner(triangleB, 1)), toA(b_.corner(triangleB, 2)));
   ++counters_.trianglePairsTested;
   offer(t.pointOnA, t.pointOnB, t.distance, triangleA, false, triangleB, false);
-  // Every point of either mesh lies within its hull, so no triangle pair is nearer than the
-  // support planes' gap g.lower, up to the roundoff of the dot products behind it (the same
-  // allowance the traversal's bounds carry). The answer is then the pair just measured.
-  return best_ - g.lower <= roundoff_ || skip(g.lower - roundoff_);
+}
+
+double Query::convexNodesBound(std::int32_t a, std::int32_t b, double bound) {
+  const MeshHierarchy::Node& na = treeA_->nodes()[a];
+  const MeshHierarchy::Node& nb = treeB_->nodes()[b];
+  // Supports by branch and bound over each node's subtree (as hullBound's), each warmed by the
+  // last one found.
+  SupportPoint lastA{na.repPoint, na.repTriangle, false}, lastB{nb.repPoint, nb.repTriangle, false};
+  auto supportOfA = [&](const Vec3& d) {
+    lastA = nodeSupport(a_, *treeA_, a, d, lastA);
+    return lastA;
+  };
+  auto supportOfB = [&](const Vec3& dInA) {
+    lastB = nodeSupport(b_, *treeB_, b, rotationAB_ * dInA, lastB);
+    SupportPoint s = lastB;
+    s.point = toA(s.point);
+    return s;
+  };
+  // Run to convergence, unless the pair is proven farther than the bound on the way.
+  auto beyond = [&](double lowerSafe) { return lowerSafe > bound; };
+  const GjkResult g = runGjk(supportOfA, supportOfB, na.box.center - toA(nb.box.center), beyond, magnitude_, 0.0);
+  ++counters_.gjkCalls;
+  counters_.gjkIterations += static_cast<std::uint64_t>(g.iterations);
+  counters_.gjkMaxIterations = std::max(counters_.gjkMaxIterations, g.iterations);
+  if (g.closest.distance < best_) offer(g.closest);  // support vertices: a real distance
+  if (g.outcome == GjkOutcome::skipped) return g.lower - roundoff_;
+  if (g.outcome != GjkOutcome::separated) return -std::numeric_limits<double>::infinity();  // the solids touch
+  // The hulls' nearest points lie on both nodes' surfaces (each is its hull's boundary), so the
+  // triangles of the nodes nearest to them carry them.
+  measureAtHullPoints(g, orderA_, na.t0, na.t1, orderB_, nb.t0, nb.t1);
+  return g.lower - roundoff_;
 }
 
 }  // namespace adsd::detail

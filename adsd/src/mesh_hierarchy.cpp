@@ -103,11 +103,13 @@ bool isFolded(const Mesh& mesh, const std::uint32_t* order, std::uint32_t t0, st
   return false;
 }
 
-/// Whether every edge of \p mesh (by vertex index) belongs to exactly two triangles: no hole.
-bool isClosed(const Mesh& mesh) {
+/// Whether every edge of triangles order[0, count) of \p mesh (by vertex index) belongs to
+/// exactly two of them: no hole.
+bool isClosed(const Mesh& mesh, const std::uint32_t* order, std::size_t count) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  edges.reserve(3 * mesh.triangleCount());
-  for (const TriangleIndices& t : mesh.triangles()) {
+  edges.reserve(3 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const TriangleIndices& t = mesh.triangles()[order[i]];
     for (int k = 0; k < 3; ++k) edges.emplace_back(std::minmax(t[k], t[(k + 1) % 3]));
   }
   std::sort(edges.begin(), edges.end());
@@ -119,27 +121,22 @@ bool isClosed(const Mesh& mesh) {
   return !edges.empty();
 }
 
-}  // namespace
-
-// O(triangles x vertices), hence only for small meshes. Closed, because a hole where the hull is
-// nearest (a wall cut in two by a planner's scene splitter, an open box) leaves the hulls nearer
-// than the surfaces, and a query's try of GJK on the vertices (convex_pair.cpp) would be lost.
-bool isClosedConvex(const Mesh& mesh) {
-  const std::vector<Vec3>& vertices = mesh.vertices();
-  if (vertices.empty() || vertices.size() > MeshHierarchy::kConvexCheckVertices || !isClosed(mesh)) return false;
-  const double extent = mesh.bounds().sizes().maxCoeff();
+/// Whether every triangle of order[0, count) with an area has all of \p points on one side of its
+/// plane. A point within 1e-9 of \p extent of a plane is on it: only the hull's own faces pass,
+/// and a vertex that rounding left on the wrong side by a hair keeps a real convex part in.
+template <class Points>
+bool pointsOnOneSideOfEveryFace(const Mesh& mesh, const std::uint32_t* order, std::size_t count, const Points& points,
+                                double extent) {
   if (!(extent > 0.0) || !std::isfinite(extent)) return false;
-  // A vertex this close to a plane is on it: only the hull's own faces pass, and a vertex that
-  // rounding left on the wrong side by a hair keeps a real convex part in.
   const double onPlane = 1e-9 * extent;
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const Vec3 a = mesh.corner(t, 0);
-    const Vec3 n = (mesh.corner(t, 1) - a).cross(mesh.corner(t, 2) - a);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vec3 a = mesh.corner(order[i], 0);
+    const Vec3 n = (mesh.corner(order[i], 1) - a).cross(mesh.corner(order[i], 2) - a);
     const double length = n.norm();
     if (!(length > 0.0) || !std::isfinite(length)) continue;  // no plane: constrains nothing
     const Vec3 unit = n / length;
     bool above = false, below = false;
-    for (const Vec3& v : vertices) {
+    for (const Vec3& v : points) {
       const double h = unit.dot(v - a);
       above = above || h > onPlane;
       below = below || h < -onPlane;
@@ -149,16 +146,111 @@ bool isClosedConvex(const Mesh& mesh) {
   return true;
 }
 
+/// Connected components of a mesh's triangles (sharing a vertex index, transitively): union-find
+/// over the vertices, each triangle labelled by its first corner's root, then numbered densely.
+std::vector<std::uint32_t> triangleComponents(const Mesh& mesh, std::uint32_t& count) {
+  std::vector<std::uint32_t> parent(mesh.vertices().size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto root = [&](std::uint32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const TriangleIndices& t : mesh.triangles()) {
+    for (int k = 1; k < 3; ++k) {
+      const std::uint32_t x = root(t[0]), y = root(t[k]);
+      if (x != y) parent[std::max(x, y)] = std::min(x, y);
+    }
+  }
+  std::vector<std::uint32_t> label(mesh.vertices().size(), UINT32_MAX), component(mesh.triangleCount());
+  count = 0;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const std::uint32_t r = root(mesh.triangles()[t][0]);
+    if (label[r] == UINT32_MAX) label[r] = count++;
+    component[t] = label[r];
+  }
+  return component;
+}
+
+}  // namespace
+
+// O(triangles x vertices), hence only for small meshes. Closed, because a hole where the hull is
+// nearest (a wall cut in two by a planner's scene splitter, an open box) leaves the hulls nearer
+// than the surfaces, and a query's try of GJK on the vertices (convex_pair.cpp) would be lost.
+bool isClosedConvex(const Mesh& mesh) {
+  const std::vector<Vec3>& vertices = mesh.vertices();
+  if (vertices.empty() || vertices.size() > MeshHierarchy::kConvexCheckVertices) return false;
+  std::vector<std::uint32_t> all(mesh.triangleCount());
+  std::iota(all.begin(), all.end(), 0u);
+  return isClosed(mesh, all.data(), all.size()) &&
+         pointsOnOneSideOfEveryFace(mesh, all.data(), all.size(), vertices, mesh.bounds().sizes().maxCoeff());
+}
+
 MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
   onHullBoundary_ = isClosedConvex(mesh);
   order_.resize(mesh.triangleCount());
   std::iota(order_.begin(), order_.end(), 0u);
   nodes_.reserve(2 * (mesh.triangleCount() / kLeafTriangles + 1));
+  std::uint32_t components = 0;
+  component_ = triangleComponents(mesh, components);
+  componentSize_.assign(components, 0);
+  componentCentroid_.assign(components, Vec3::Zero());
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    ++componentSize_[component_[t]];
+    componentCentroid_[component_[t]] += mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2);
+  }
+  for (std::uint32_t c = 0; c < components; ++c) componentCentroid_[c] /= 3.0 * componentSize_[c];
   std::vector<std::uint32_t> marks(mesh.vertices().size(), UINT32_MAX);
-  build(mesh, 0, static_cast<std::uint32_t>(mesh.triangleCount()), marks);
+  build(mesh, 0, static_cast<std::uint32_t>(mesh.triangleCount()), 1, marks);
 }
 
-std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1,
+void MeshHierarchy::classifyComponent(const Mesh& mesh, Node& node) const {
+  node.wholeComponent = 0;
+  node.convexSolid = 0;
+  const std::uint32_t c = component_[order_[node.t0]];
+  if (componentSize_[c] != node.t1 - node.t0) return;
+  for (std::uint32_t i = node.t0; i < node.t1; ++i) {
+    if (component_[order_[i]] != c) return;
+  }
+  node.wholeComponent = 1;
+  // The component's distinct vertices, if few enough for the O(triangles x vertices) check.
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> seen;
+  for (std::uint32_t i = node.t0; i < node.t1; ++i) {
+    for (std::uint32_t v : mesh.triangles()[order_[i]]) {
+      if (std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
+      if (seen.size() == kConvexCheckVertices) return;
+      seen.push_back(v);
+      points.push_back(mesh.vertices()[v]);
+    }
+  }
+  const std::uint32_t* range = order_.data() + node.t0;
+  const std::size_t count = node.t1 - node.t0;
+  node.convexSolid = isClosed(mesh, range, count) &&
+                     pointsOnOneSideOfEveryFace(mesh, range, count, points, 2.0 * node.box.half.maxCoeff());
+}
+
+std::uint32_t MeshHierarchy::splitBetweenComponents(std::uint32_t t0, std::uint32_t t1, const Vec3& axis) {
+  const std::uint32_t first = component_[order_[t0]];
+  if (std::all_of(order_.begin() + t0, order_.begin() + t1, [&](std::uint32_t t) { return component_[t] == first; })) {
+    return t0;
+  }
+  // Components by their centroids along the axis (ties by number, so each is contiguous).
+  auto key = [&](std::uint32_t t) { return std::make_pair(axis.dot(componentCentroid_[component_[t]]), component_[t]); };
+  auto before = [&](std::uint32_t s, std::uint32_t t) { return key(s) < key(t); };
+  const std::uint32_t mid = t0 + (t1 - t0) / 2;
+  std::nth_element(order_.begin() + t0, order_.begin() + mid, order_.begin() + t1, before);
+  // The component at the middle goes whole to the smaller side.
+  const auto middle = key(order_[mid]);
+  const auto lowEnd = std::partition(order_.begin() + t0, order_.begin() + t1, [&](std::uint32_t t) { return key(t) < middle; });
+  const auto middleEnd = std::partition(lowEnd, order_.begin() + t1, [&](std::uint32_t t) { return key(t) == middle; });
+  const auto low = static_cast<std::uint32_t>(lowEnd - order_.begin());
+  const auto high = static_cast<std::uint32_t>(middleEnd - order_.begin());
+  std::uint32_t split = (low - t0 <= t1 - high) ? high : low;
+  if (split == t0 || split == t1) split = split == low ? high : low;
+  return split;
+}
+
+std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, int level,
                                   std::vector<std::uint32_t>& marks) {
   const std::int32_t index = static_cast<std::int32_t>(nodes_.size());
   nodes_.emplace_back();
@@ -183,6 +275,7 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
     }
   }
   node.repPoint = mesh.corner(node.repTriangle, static_cast<int>(node.repCorner));
+  classifyComponent(mesh, node);
   if (t1 - t0 <= kLeafTriangles) {
     node.folded = isFolded(mesh, order_.data(), t0, t1);
     node.v0 = static_cast<std::uint32_t>(leafVertices_.size());
@@ -198,16 +291,21 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
     nodes_[index] = node;
     return index;
   }
-  // Halve at the median centroid along the box's longest axis.
+  // Near the root, a node of several components is split between them, so that each component
+  // below becomes one node (a closed convex one is then settled whole by GJK, Node::convexSolid);
+  // else, and within a component, halve at the median centroid along the box's longest axis.
   int longest = 0;
   node.box.half.maxCoeff(&longest);
   const Vec3 axis = node.box.axes.col(longest);
-  auto key = [&](std::uint32_t t) { return axis.dot(mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)); };
-  const std::uint32_t mid = t0 + (t1 - t0) / 2;
-  std::nth_element(order_.begin() + t0, order_.begin() + mid, order_.begin() + t1,
-                   [&](std::uint32_t s, std::uint32_t t) { return key(s) < key(t); });
-  node.left = build(mesh, t0, mid, marks);
-  node.right = build(mesh, mid, t1, marks);
+  std::uint32_t mid = level <= kComponentSplitLevels ? splitBetweenComponents(t0, t1, axis) : t0;
+  if (mid == t0) {
+    auto key = [&](std::uint32_t t) { return axis.dot(mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)); };
+    mid = t0 + (t1 - t0) / 2;
+    std::nth_element(order_.begin() + t0, order_.begin() + mid, order_.begin() + t1,
+                     [&](std::uint32_t s, std::uint32_t t) { return key(s) < key(t); });
+  }
+  node.left = build(mesh, t0, mid, level + 1, marks);
+  node.right = build(mesh, mid, t1, level + 1, marks);
   nodes_[index] = node;
   return index;
 }
@@ -231,12 +329,14 @@ void MeshHierarchy::refit(const Mesh& mesh) {
       for (const Vec3& c : corners(nodes_[n.right].box)) points.push_back(c);
       fitExtents(n.box, points);
     }
+    if (n.wholeComponent) classifyComponent(mesh, n);  // a deformation may dent a convex part
   }
 }
 
 std::size_t MeshHierarchy::bytes() const {
   return sizeof(*this) + nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(std::uint32_t) +
-         leafVertices_.capacity() * sizeof(std::uint32_t);
+         leafVertices_.capacity() * sizeof(std::uint32_t) + component_.capacity() * sizeof(std::uint32_t) +
+         componentSize_.capacity() * sizeof(std::uint32_t) + componentCentroid_.capacity() * sizeof(Vec3);
 }
 
 }  // namespace adsd

@@ -148,6 +148,18 @@ class Query {
   /// (convex_pair.cpp). True when that settles the query (the support planes' gap proves the
   /// pair's distance, or the mode's rule drops the rest); else the upper bound found stays.
   bool settleConvexPair();
+  /// Both nodes closed convex components (MeshHierarchy::Node::convexSolid): GJK on them to
+  /// convergence, stopping once the pair is proven farther than \p bound, and where the hulls
+  /// are apart the triangle pair at their nearest points measured (convex_pair.cpp); every
+  /// distance found is offered. Returns the support planes' gap minus the roundoff allowance, a
+  /// lower bound of the pair's distance within that allowance of the one measured; -infinity
+  /// when the solids touch or one holds the other (the traversal then opens the pair).
+  double convexNodesBound(std::int32_t a, std::int32_t b, double bound);
+  /// Measures the triangle pair at GJK's nearest hull points \p g.onA, \p g.onB, among triangles
+  /// orderA[a0, a1) of A and orderB[b0, b1) of B (a null order: the triangles by index), and
+  /// offers its distance.
+  void measureAtHullPoints(const GjkResult& g, const std::uint32_t* orderA, std::uint32_t a0, std::uint32_t a1,
+                           const std::uint32_t* orderB, std::uint32_t b0, std::uint32_t b1);
   /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
   /// margin and offers the closest support points as an upper bound. Stops once the margin proves
   /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).

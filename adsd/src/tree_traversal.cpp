@@ -278,6 +278,21 @@ void Query::traverseTrees() {
     return pair.lower > bound;
   };
 
+  // Two closed convex components (MeshHierarchy::Node::convexSolid, the boxes of an environment
+  // given as one mesh): GJK measures the pair's distance and proves it (convexNodesBound). True
+  // when the pair is then settled: proven farther than the bound, or measured with nothing in it
+  // nearer than the global upper bound by more than the roundoff allowance.
+  auto settleConvexNodes = [&](Pending& pair) {
+    const double lowerSafe = convexNodesBound(pair.a, pair.b, bound);
+    limit = pruneBound();
+    bound = limit + roundoff_;
+    if (lowerSafe > bound) {
+      dropped();
+      return true;
+    }
+    return best_ - lowerSafe <= 2.0 * roundoff_;
+  };
+
   Pending p;
   bool have = false;
   if (lowersUpperBound) {
@@ -308,6 +323,8 @@ void Query::traverseTrees() {
         counters_.pairsRejectedByBounds += pending.size();
         return;
       }
+    } else if (lowersUpperBound && nodesA[p.a].convexSolid && nodesB[p.b].convexSolid && settleConvexNodes(p)) {
+      ++counters_.pairsRejectedByBounds;
     } else if (lowersUpperBound && worthHullBound(nodesA[p.a], nodesB[p.b], p.lower) &&
                raiseByHullBound(p)) {
       ++counters_.pairsRejectedByBounds;
@@ -322,7 +339,13 @@ void Query::traverseTrees() {
         testLeafPair(na, p.maskA, nb, p.maskB, limit, bound);
       } else {
         ++counters_.pairsSplit;
-        const bool splitA = !na.isLeaf() && (nb.isLeaf() || boxSize2(na.box) >= boxSize2(nb.box));
+        // The larger node is split, except that a query lowering an upper bound keeps a convex
+        // solid whole against a node that is not one, so that the pairs below may meet as two
+        // solids (settleConvexNodes).
+        bool splitA = !na.isLeaf() && (nb.isLeaf() || boxSize2(na.box) >= boxSize2(nb.box));
+        if (lowersUpperBound && !na.isLeaf() && !nb.isLeaf() && na.convexSolid != nb.convexSolid) {
+          splitA = nb.convexSolid != 0;
+        }
         Pending children[2];
         int count = 0;
         if (splitA) {

@@ -36,10 +36,13 @@ class MeshHierarchy {
  public:
   /// Leaves hold at most this many triangles: below it a GJK run costs more than direct tests.
   static constexpr std::uint32_t kLeafTriangles = 4;
-  /// No path from the root to a leaf has more nodes than this: each split halves a node's
-  /// triangles (the median), and a mesh has fewer than 2^32 of them, so below the root at most 30
-  /// halvings reach kLeafTriangles. Searches down the tree keep a fixed stack of this size.
-  static constexpr int kMaxTreeLevels = 32;
+  /// Splits between whole components (Node::wholeComponent) happen only this near the root;
+  /// deeper, every split halves a node's triangles (the median).
+  static constexpr int kComponentSplitLevels = 24;
+  /// No path from the root to a leaf has more nodes than this: at most kComponentSplitLevels
+  /// component splits, then halvings, of which a mesh of fewer than 2^32 triangles needs at most
+  /// 31 to reach kLeafTriangles. Searches down the tree keep a fixed stack of this size.
+  static constexpr int kMaxTreeLevels = kComponentSplitLevels + 32;
   /// A leaf is folded when two of its triangles' normals are more than this apart (cosine 0.5,
   /// 60 degrees): the faces of a box meet at 90, a plate's sides at 180, while a capsule of 32
   /// segments turns 11.25 degrees per strip and a fine scanned mesh less still.
@@ -62,12 +65,21 @@ class MeshHierarchy {
     /// the traversal's cheap upper bound and ordering estimate for a node pair (sec. 4's upper
     /// bound from support points, taken from the tree instead of GJK).
     std::uint32_t repTriangle = 0;
-    std::uint16_t repCorner = 0;
+    std::uint8_t repCorner = 0;
     /// Leaves: whether two of the leaf's triangles face directions more than 60 degrees apart (kFoldCosine)
     /// (a fold: a box's edge or corner, a thin plate's two sides). A node near one face of a fold
     /// is far from the others, so the traversal bounds a folded leaf's triangles one by one
     /// (tree_traversal.cpp, worthNarrowing); a flat or gently curved leaf is bounded by its box.
-    std::uint16_t folded = 0;
+    std::uint8_t folded = 0;
+    /// Whether the node's triangles are a whole connected component of the mesh (by shared
+    /// vertices: a box obstacle of an environment given as one mesh, a separate part of a model).
+    /// The tree keeps components whole above them (build), so each is one node.
+    std::uint8_t wholeComponent = 0;
+    /// Whether the node is a whole component that is closed and convex (isClosedConvex on its
+    /// triangles): the distance between two such nodes is their hulls' while these are apart,
+    /// and queries settle such a pair by GJK on the two nodes (tree_traversal.cpp) instead of
+    /// opening it.
+    std::uint8_t convexSolid = 0;
     /// That corner's position (mesh frame), kept beside the box: the traversal reads it for every
     /// node pair it tests, and through the triangle and vertex arrays that is two dependent loads
     /// from memory the box did not bring into cache.
@@ -96,11 +108,22 @@ class MeshHierarchy {
   bool onHullBoundary() const { return onHullBoundary_; }  // isClosedConvex(mesh)
 
  private:
-  std::int32_t build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, std::vector<std::uint32_t>& marks);
+  std::int32_t build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, int level, std::vector<std::uint32_t>& marks);
+  /// Where to split order_[t0, t1), which holds more than one component, between whole components
+  /// (reordering the range): the components ordered along \p axis by their centroids, cut near
+  /// the middle triangle. Returns t0 when the range is one component.
+  std::uint32_t splitBetweenComponents(std::uint32_t t0, std::uint32_t t1, const Vec3& axis);
+  /// Sets node.wholeComponent and node.convexSolid for triangles order_[t0, t1).
+  void classifyComponent(const Mesh& mesh, Node& node) const;
 
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> leafVertices_;
+  /// Per triangle, its connected component (triangles sharing a vertex, transitively), and per
+  /// component its triangle count and centroid: kept for refit, which classifies nodes again.
+  std::vector<std::uint32_t> component_;
+  std::vector<std::uint32_t> componentSize_;
+  std::vector<Vec3> componentCentroid_;
   bool onHullBoundary_ = false;
 };
 

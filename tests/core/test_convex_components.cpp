@@ -1,0 +1,195 @@
+/// \file
+/// \brief Meshes made of several parts (an environment of box obstacles given as one mesh): the
+/// tree keeps each connected component whole in one node, flags the closed convex ones
+/// (MeshHierarchy::Node::convexSolid), and queries settle a pair of such nodes by GJK and one
+/// triangle pair (convex_pair.cpp, convexNodesBound). Checked against the brute-force binary128
+/// oracle at uniform poses over the environment (in contact, near, far), in the exact, cap and
+/// tolerance modes, before and after a deformation dents one of the solids.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "adsd/distance.h"
+#include "adsd/mesh_hierarchy.h"
+#include "adsd/shapes.h"
+#include "oracle.h"
+#include "random_geometry.h"
+
+namespace adsd {
+namespace {
+
+using oracle::kPromisedAccuracy;
+using oracle::sceneDiagonal;
+using oracle::SeededRandom;
+
+#ifdef ADSD_TESTS_UNDER_SANITIZER
+constexpr int kPoses = 15;
+#else
+constexpr int kPoses = 150;
+#endif
+
+/// A box with the two triangles of its +x face left out: convex in shape, but not closed.
+Mesh openBox(double half) {
+  const Mesh closed = shapes::box(Vec3(half, half, half));
+  std::vector<TriangleIndices> kept;
+  for (std::size_t t = 0; t < closed.triangleCount(); ++t) {
+    bool onPlusX = true;
+    for (int k = 0; k < 3; ++k) onPlusX = onPlusX && closed.corner(t, k).x() > 0.5 * half;
+    if (!onPlusX) kept.push_back(closed.triangles()[t]);
+  }
+  return Mesh(closed.vertices(), std::move(kept), "open box");
+}
+
+Pose at(double x, double y, double z, double angle = 0.0) {
+  return Pose(Eigen::Translation3d(x, y, z) * Eigen::AngleAxisd(angle, Vec3(1, 2, 3).normalized()));
+}
+
+/// An environment of nine parts in one mesh: six boxes of different sizes and turns, a round
+/// solid, an open box and a torus (neither convex solids), and their component sizes in order.
+struct Environment {
+  Mesh mesh;
+  std::vector<std::size_t> partTriangles;
+  std::vector<bool> partIsConvexSolid;
+};
+
+Environment environment() {
+  const std::vector<Mesh> parts = {shapes::box(Vec3(0.5, 0.5, 0.5)),   shapes::box(Vec3(2.0, 0.1, 1.0)),
+                                   shapes::box(Vec3(0.3, 0.8, 0.2)),   shapes::box(Vec3(0.1, 0.1, 1.5)),
+                                   shapes::box(Vec3(1.0, 1.0, 0.05)),  shapes::box(Vec3(0.4, 0.2, 0.6)),
+                                   shapes::sphere(0.6, 8),             openBox(0.5),
+                                   shapes::torus(0.8, 0.2, 10, 6)};
+  const std::vector<Pose> poses = {at(0, 0, 0),      at(3, 1, 0, 0.3), at(-2, 2, 1, 1.1), at(1, -3, 0, 0.7),
+                                   at(-3, -2, 0, 2.0), at(2, 3, 2, -0.4), at(0, 2.5, -1.5), at(-1, -1, 2.5, 0.5),
+                                   at(3, -1, 2, 0.9)};
+  Environment e{shapes::merge(parts, poses), {}, {}};
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    e.partTriangles.push_back(parts[i].triangleCount());
+    e.partIsConvexSolid.push_back(i < 7);
+  }
+  e.mesh.buildHierarchy();
+  return e;
+}
+
+/// The parts' triangles are ranges of the merged mesh, in order.
+std::vector<std::size_t> partOfTriangles(const Environment& e) {
+  std::vector<std::size_t> part;
+  for (std::size_t i = 0; i < e.partTriangles.size(); ++i) part.insert(part.end(), e.partTriangles[i], i);
+  return part;
+}
+
+TEST(ConvexComponents, EveryPartIsOneNodeAndOnlyClosedConvexOnesAreSolids) {
+  const Environment e = environment();
+  const MeshHierarchy& tree = *e.mesh.hierarchy();
+  const std::vector<std::size_t> part = partOfTriangles(e);
+  std::vector<int> wholeNodes(e.partTriangles.size(), 0), solidNodes(e.partTriangles.size(), 0);
+  for (const MeshHierarchy::Node& n : tree.nodes()) {
+    const std::size_t first = part[tree.order()[n.t0]];
+    const bool onePart = std::all_of(tree.order().begin() + n.t0, tree.order().begin() + n.t1,
+                                     [&](std::uint32_t t) { return part[t] == first; });
+    const bool wholePart = onePart && n.t1 - n.t0 == e.partTriangles[first];
+    EXPECT_EQ(n.wholeComponent != 0, wholePart) << "node " << n.t0 << ".." << n.t1;
+    if (!wholePart) {
+      EXPECT_EQ(n.convexSolid, 0) << "node " << n.t0 << ".." << n.t1;
+      continue;
+    }
+    ++wholeNodes[first];
+    solidNodes[first] += n.convexSolid;
+  }
+  for (std::size_t i = 0; i < e.partTriangles.size(); ++i) {
+    EXPECT_EQ(wholeNodes[i], 1) << "part " << i << " is not one node";
+    EXPECT_EQ(solidNodes[i], e.partIsConvexSolid[i] ? 1 : 0) << "part " << i;
+  }
+}
+
+struct Robot {
+  std::string name;
+  Mesh mesh;
+};
+
+std::vector<Robot> robots() {
+  std::vector<Robot> r = {{"box", shapes::box(Vec3(0.4, 0.25, 0.15))},
+                          {"round", shapes::sphere(0.3, 8)},
+                          {"C shape", shapes::cShape(0.4, 0.1, 0.9, 10)},
+                          {"two boxes", shapes::merge({shapes::box(Vec3(0.2, 0.2, 0.2)), shapes::box(Vec3(0.1, 0.5, 0.1))},
+                                                      {at(0, 0, 0), at(0.6, 0, 0, 0.4)})}};
+  for (Robot& robot : r) robot.mesh.buildHierarchy();
+  return r;
+}
+
+/// Exact, cap and 1 % tolerance queries at uniform poses over the environment's box, the
+/// robot's too (one in eight in contact or nearly), against the oracle; \p gjkSettled counts the
+/// exact queries that ran GJK on node pairs.
+void expectOracleAnswers(const Mesh& env, const Robot& robot, SeededRandom& random, int& gjkSettled) {
+  const Eigen::AlignedBox3d region = env.bounds();
+  for (int i = 0; i < kPoses; ++i) {
+    const Vec3 place(random.uniform(region.min().x(), region.max().x()), random.uniform(region.min().y(), region.max().y()),
+                     random.uniform(region.min().z(), region.max().z()));
+    const Pose poseRobot(Eigen::Translation3d(place) * random.rotation());
+    const Pose poseEnv = Pose::Identity();
+    const oracle::MeshPairDistance truth = oracle::meshDistance(robot.mesh, poseRobot, env, poseEnv);
+    const double allowed = kPromisedAccuracy * sceneDiagonal(robot.mesh, poseRobot, env, poseEnv);
+    SCOPED_TRACE(robot.name + ", pose " + std::to_string(i) + ", oracle " + std::to_string(truth.value));
+
+    const DistanceResult exact = distance(robot.mesh, poseRobot, env, poseEnv, DistanceOptions::exactDistance());
+    ASSERT_EQ(exact.status, DistanceStatus::exact);
+    EXPECT_NEAR(exact.distance, truth.value, allowed);
+    EXPECT_NEAR((exact.witnessA - exact.witnessB).norm(), exact.distance, allowed);
+    gjkSettled += exact.counters.gjkCalls > 0;
+
+    if (truth.value > allowed) {
+      const DistanceResult below = distance(robot.mesh, poseRobot, env, poseEnv, DistanceOptions::cappedAt(0.5 * truth.value));
+      EXPECT_EQ(below.status, DistanceStatus::beyondCap);
+      EXPECT_LE(below.lower, truth.value + allowed);
+      const DistanceResult above = distance(robot.mesh, poseRobot, env, poseEnv, DistanceOptions::cappedAt(2.0 * truth.value));
+      EXPECT_EQ(above.status, DistanceStatus::exact);
+      EXPECT_NEAR(above.distance, truth.value, allowed);
+    }
+    const DistanceResult tolerant =
+        distance(robot.mesh, poseRobot, env, poseEnv, DistanceOptions::withTolerance(0.0, 0.01));
+    EXPECT_LE(tolerant.lower, truth.value + allowed);
+    EXPECT_GE(tolerant.upper, truth.value - allowed);
+    EXPECT_LE(tolerant.upper, 1.01 * tolerant.lower + allowed);
+    const DistanceResult valid = distance(robot.mesh, poseRobot, env, poseEnv, DistanceOptions::aboveThreshold(0.0));
+    EXPECT_EQ(valid.status == DistanceStatus::aboveThreshold, truth.value > allowed);
+  }
+}
+
+TEST(ConvexComponents, AnswersMatchTheOracleAcrossTheEnvironment) {
+  const Environment e = environment();
+  SeededRandom random(9001);
+  for (const Robot& robot : robots()) {
+    int gjkSettled = 0;
+    expectOracleAnswers(e.mesh, robot, random, gjkSettled);
+    // The box and the round robot are convex solids themselves: most of their queries meet the
+    // environment's solids as solids.
+    if (robot.name == "box" || robot.name == "round") {
+      EXPECT_GE(gjkSettled, kPoses / 2) << robot.name;
+    }
+  }
+}
+
+/// A deformation that pushes one corner of the first box inwards dents it: refit must take its
+/// convexSolid flag away (GJK on its hull would then see the corner the surface no longer has),
+/// and the answers stay the oracle's.
+TEST(ConvexComponents, ADentedSolidLosesItsFlagOnRefit) {
+  Environment e = environment();
+  std::vector<Vec3> moved = e.mesh.vertices();
+  // The first box's corner (+,+,+) is one of its first 8 vertices; pull it to the centre's side.
+  for (std::size_t v = 0; v < 8; ++v) {
+    if (moved[v].x() > 0 && moved[v].y() > 0 && moved[v].z() > 0) moved[v] = Vec3(0.1, 0.1, 0.1);
+  }
+  e.mesh.setVertices(moved);
+  const MeshHierarchy& tree = *e.mesh.hierarchy();
+  int solids = 0;
+  for (const MeshHierarchy::Node& n : tree.nodes()) solids += n.convexSolid;
+  EXPECT_EQ(solids, 6);  // seven before the dent
+  SeededRandom random(31337);
+  int gjkSettled = 0;
+  expectOracleAnswers(e.mesh, robots()[0], random, gjkSettled);
+}
+
+}  // namespace
+}  // namespace adsd
