@@ -204,14 +204,17 @@ MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
 }
 
 void MeshHierarchy::classifyComponent(const Mesh& mesh, Node& node) const {
-  node.wholeComponent = 0;
+  node.span = ComponentSpan::part;
   node.convexSolid = 0;
   const std::uint32_t c = component_[order_[node.t0]];
-  if (componentSize_[c] != node.t1 - node.t0) return;
   for (std::uint32_t i = node.t0; i < node.t1; ++i) {
-    if (component_[order_[i]] != c) return;
+    if (component_[order_[i]] != c) {
+      node.span = ComponentSpan::several;
+      return;
+    }
   }
-  node.wholeComponent = 1;
+  if (componentSize_[c] != node.t1 - node.t0) return;
+  node.span = ComponentSpan::whole;
   // The component's distinct vertices, if few enough for the O(triangles x vertices) check.
   std::vector<Vec3> points;
   std::vector<std::uint32_t> seen;
@@ -329,7 +332,7 @@ void MeshHierarchy::refit(const Mesh& mesh) {
       for (const Vec3& c : corners(nodes_[n.right].box)) points.push_back(c);
       fitExtents(n.box, points);
     }
-    if (n.wholeComponent) classifyComponent(mesh, n);  // a deformation may dent a convex part
+    if (n.span == ComponentSpan::whole) classifyComponent(mesh, n);  // a deformation may dent a convex part
   }
 }
 

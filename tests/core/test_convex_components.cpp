@@ -90,7 +90,8 @@ TEST(ConvexComponents, EveryPartIsOneNodeAndOnlyClosedConvexOnesAreSolids) {
     const bool onePart = std::all_of(tree.order().begin() + n.t0, tree.order().begin() + n.t1,
                                      [&](std::uint32_t t) { return part[t] == first; });
     const bool wholePart = onePart && n.t1 - n.t0 == e.partTriangles[first];
-    EXPECT_EQ(n.wholeComponent != 0, wholePart) << "node " << n.t0 << ".." << n.t1;
+    EXPECT_EQ(n.span == MeshHierarchy::ComponentSpan::whole, wholePart) << "node " << n.t0 << ".." << n.t1;
+    EXPECT_EQ(n.span == MeshHierarchy::ComponentSpan::several, !onePart) << "node " << n.t0 << ".." << n.t1;
     if (!wholePart) {
       EXPECT_EQ(n.convexSolid, 0) << "node " << n.t0 << ".." << n.t1;
       continue;

@@ -36,7 +36,7 @@ class MeshHierarchy {
  public:
   /// Leaves hold at most this many triangles: below it a GJK run costs more than direct tests.
   static constexpr std::uint32_t kLeafTriangles = 4;
-  /// Splits between whole components (Node::wholeComponent) happen only this near the root;
+  /// Splits between whole components (Node::span) happen only this near the root;
   /// deeper, every split halves a node's triangles (the median).
   static constexpr int kComponentSplitLevels = 24;
   /// No path from the root to a leaf has more nodes than this: at most kComponentSplitLevels
@@ -52,6 +52,13 @@ class MeshHierarchy {
   /// round robot (130), a convex part of a decomposed model. The check costs triangles x vertices
   /// (at most about 1.3e5 products) when the tree is built or refitted.
   static constexpr std::size_t kConvexCheckVertices = 256;
+
+  /// Where a node stands among the mesh's connected components.
+  enum class ComponentSpan : std::uint8_t {
+    part,    ///< within one component, not all of it
+    whole,   ///< exactly one whole component
+    several  ///< more than one component, each whole
+  };
 
   struct Node {
     /// Bounds of the node's vertices, mesh frame: oriented along their principal axes, which fit
@@ -71,10 +78,10 @@ class MeshHierarchy {
     /// is far from the others, so the traversal bounds a folded leaf's triangles one by one
     /// (tree_traversal.cpp, worthNarrowing); a flat or gently curved leaf is bounded by its box.
     std::uint8_t folded = 0;
-    /// Whether the node's triangles are a whole connected component of the mesh (by shared
-    /// vertices: a box obstacle of an environment given as one mesh, a separate part of a model).
-    /// The tree keeps components whole above them (build), so each is one node.
-    std::uint8_t wholeComponent = 0;
+    /// How the node's triangles lie among the mesh's connected components (by shared vertices: a
+    /// box obstacle of an environment given as one mesh, a separate part of a model). The tree
+    /// keeps components whole near the root (build), so each is one node.
+    ComponentSpan span = ComponentSpan::part;
     /// Whether the node is a whole component that is closed and convex (isClosedConvex on its
     /// triangles): the distance between two such nodes is their hulls' while these are apart,
     /// and queries settle such a pair by GJK on the two nodes (tree_traversal.cpp) instead of
@@ -113,7 +120,7 @@ class MeshHierarchy {
   /// (reordering the range): the components ordered along \p axis by their centroids, cut near
   /// the middle triangle. Returns t0 when the range is one component.
   std::uint32_t splitBetweenComponents(std::uint32_t t0, std::uint32_t t1, const Vec3& axis);
-  /// Sets node.wholeComponent and node.convexSolid for triangles order_[t0, t1).
+  /// Sets node.span and node.convexSolid for triangles order_[t0, t1).
   void classifyComponent(const Mesh& mesh, Node& node) const;
 
   std::vector<Node> nodes_;
