@@ -13,7 +13,9 @@
 // lower bound and the closest support points as an upper bound. Leaves' triangles are tested
 // against the other node's box and against each other's (filters that only ever prove
 // "farther"), and only the pairs no filter separates reach the exact triangle distance. A
-// validity query stops at the first triangle pair within D.
+// validity query stops at the first triangle pair within D. Two nodes that are closed convex
+// components (MeshHierarchy::Node::convexSolid) are settled by GJK to convergence and the one
+// triangle pair at the hulls' nearest points (convex_pair.cpp), unopened.
 //
 // distance.cpp sends every query between two meshes with trees here (pruneBound holds each
 // mode's rule); the paper's stages answer queries from scratch (decomposition.cpp).
@@ -282,6 +284,9 @@ void Query::traverseTrees() {
   // given as one mesh): GJK measures the pair's distance and proves it (convexNodesBound). True
   // when the pair is then settled: proven farther than the bound, or measured with nothing in it
   // nearer than the global upper bound by more than the roundoff allowance.
+  // Query::run tried two whole convex meshes already (settleConvexPair): GJK on the roots again
+  // would only repeat its failure.
+  const bool wholeMeshesTried = treeA_->onHullBoundary() && treeB_->onHullBoundary();
   auto settleConvexNodes = [&](Pending& pair) {
     const double lowerSafe = convexNodesBound(pair.a, pair.b, bound);
     limit = pruneBound();
@@ -323,7 +328,8 @@ void Query::traverseTrees() {
         counters_.pairsRejectedByBounds += pending.size();
         return;
       }
-    } else if (lowersUpperBound && nodesA[p.a].convexSolid && nodesB[p.b].convexSolid && settleConvexNodes(p)) {
+    } else if (lowersUpperBound && nodesA[p.a].convexSolid && nodesB[p.b].convexSolid &&
+               !(p.a == 0 && p.b == 0 && wholeMeshesTried) && settleConvexNodes(p)) {
       ++counters_.pairsRejectedByBounds;
     } else if (lowersUpperBound && worthHullBound(nodesA[p.a], nodesB[p.b], p.lower) &&
                raiseByHullBound(p)) {
