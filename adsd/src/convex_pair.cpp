@@ -137,32 +137,14 @@ void Query::measureAtHullPoints(const GjkResult& g, const std::uint32_t* orderA,
 }
 
 double Query::convexNodesBound(std::int32_t a, std::int32_t b, double bound) {
-  const MeshHierarchy::Node& na = treeA_->nodes()[a];
-  const MeshHierarchy::Node& nb = treeB_->nodes()[b];
-  // Supports by branch and bound over each node's subtree (as hullBound's), each warmed by the
-  // last one found.
-  SupportPoint lastA{na.repPoint, na.repTriangle, false}, lastB{nb.repPoint, nb.repTriangle, false};
-  auto supportOfA = [&](const Vec3& d) {
-    lastA = nodeSupport(a_, *treeA_, a, d, lastA);
-    return lastA;
-  };
-  auto supportOfB = [&](const Vec3& dInA) {
-    lastB = nodeSupport(b_, *treeB_, b, rotationAB_ * dInA, lastB);
-    SupportPoint s = lastB;
-    s.point = toA(s.point);
-    return s;
-  };
-  // Run to convergence, unless the pair is proven farther than the bound on the way.
-  auto beyond = [&](double lowerSafe) { return lowerSafe > bound; };
-  const GjkResult g = runGjk(supportOfA, supportOfB, na.box.center - toA(nb.box.center), beyond, magnitude_, 0.0);
-  ++counters_.gjkCalls;
-  counters_.gjkIterations += static_cast<std::uint64_t>(g.iterations);
-  counters_.gjkMaxIterations = std::max(counters_.gjkMaxIterations, g.iterations);
-  if (g.closest.distance < best_) offer(g.closest);  // support vertices: a real distance
+  // To convergence, unless the pair is proven farther than the bound on the way.
+  const GjkResult g = gjkOnNodes(a, b, [&](double lowerSafe) { return lowerSafe > bound; }, 0.0);
   if (g.outcome == GjkOutcome::skipped) return g.lower - roundoff_;
   if (g.outcome != GjkOutcome::separated) return -std::numeric_limits<double>::infinity();  // the solids touch
   // The hulls' nearest points lie on both nodes' surfaces (each is its hull's boundary), so the
   // triangles of the nodes nearest to them carry them.
+  const MeshHierarchy::Node& na = treeA_->nodes()[a];
+  const MeshHierarchy::Node& nb = treeB_->nodes()[b];
   measureAtHullPoints(g, orderA_, na.t0, na.t1, orderB_, nb.t0, nb.t1);
   return g.lower - roundoff_;
 }

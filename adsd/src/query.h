@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -160,6 +161,11 @@ class Query {
   /// offers its distance.
   void measureAtHullPoints(const GjkResult& g, const std::uint32_t* orderA, std::uint32_t a0, std::uint32_t a1,
                            const std::uint32_t* orderB, std::uint32_t b0, std::uint32_t b1);
+  /// GJK on the sub-meshes of tree nodes \p a and \p b (sec. 4), supports by branch and bound
+  /// over their subtrees (nodeSupport, each search warmed by the last support point), stopping
+  /// when \p stop accepts the lower bound (minus roundoff) or at \p relativeGap; counts the run
+  /// and offers the closest support points found.
+  GjkResult gjkOnNodes(std::int32_t a, std::int32_t b, const std::function<bool(double)>& stop, double relativeGap);
   /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
   /// margin and offers the closest support points as an upper bound. Stops once the margin proves
   /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).

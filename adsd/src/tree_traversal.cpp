@@ -21,6 +21,7 @@
 // mode's rule); the paper's stages answer queries from scratch (decomposition.cpp).
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 
 #include "adsd/triangle_distance.h"
@@ -441,7 +442,8 @@ SupportPoint Query::nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std
   return best;
 }
 
-double Query::hullBound(std::int32_t a, std::int32_t b, double bound) {
+GjkResult Query::gjkOnNodes(std::int32_t a, std::int32_t b, const std::function<bool(double)>& stop,
+                            double relativeGap) {
   // Each side's last support point (in its own mesh frame) warms the next search.
   const MeshHierarchy::Node& na = treeA_->nodes()[a];
   const MeshHierarchy::Node& nb = treeB_->nodes()[b];
@@ -456,15 +458,18 @@ double Query::hullBound(std::int32_t a, std::int32_t b, double bound) {
     s.point = toA(s.point);
     return s;
   };
-  int iterations = 0;
-  auto enough = [&](double lowerSafe) { return lowerSafe > bound || ++iterations >= kHullBoundIterations; };
-  const Vec3 start = treeA_->nodes()[a].box.center - toA(treeB_->nodes()[b].box.center);
-  const GjkResult g = runGjk(supportOfA, supportOfB, start, enough, magnitude_);
+  const GjkResult g = runGjk(supportOfA, supportOfB, na.box.center - toA(nb.box.center), stop, magnitude_, relativeGap);
   ++counters_.gjkCalls;
   counters_.gjkIterations += static_cast<std::uint64_t>(g.iterations);
   counters_.gjkMaxIterations = std::max(counters_.gjkMaxIterations, g.iterations);
-  if (g.closest.distance < best_) offer(g.closest);
-  return g.lower - roundoff_;
+  if (g.closest.distance < best_) offer(g.closest);  // support vertices: a real distance
+  return g;
+}
+
+double Query::hullBound(std::int32_t a, std::int32_t b, double bound) {
+  int iterations = 0;
+  auto enough = [&](double lowerSafe) { return lowerSafe > bound || ++iterations >= kHullBoundIterations; };
+  return gjkOnNodes(a, b, enough, tolerance::kGjkRelativeGap).lower - roundoff_;
 }
 
 void Query::testLeafPair(const MeshHierarchy::Node& na, std::uint32_t maskA, const MeshHierarchy::Node& nb,

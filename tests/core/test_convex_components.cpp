@@ -15,6 +15,7 @@
 #include "adsd/distance.h"
 #include "adsd/mesh_hierarchy.h"
 #include "adsd/shapes.h"
+#include "open_box.h"
 #include "oracle.h"
 #include "random_geometry.h"
 
@@ -31,17 +32,7 @@ constexpr int kPoses = 15;
 constexpr int kPoses = 150;
 #endif
 
-/// A box with the two triangles of its +x face left out: convex in shape, but not closed.
-Mesh openBox(double half) {
-  const Mesh closed = shapes::box(Vec3(half, half, half));
-  std::vector<TriangleIndices> kept;
-  for (std::size_t t = 0; t < closed.triangleCount(); ++t) {
-    bool onPlusX = true;
-    for (int k = 0; k < 3; ++k) onPlusX = onPlusX && closed.corner(t, k).x() > 0.5 * half;
-    if (!onPlusX) kept.push_back(closed.triangles()[t]);
-  }
-  return Mesh(closed.vertices(), std::move(kept), "open box");
-}
+using testing::openBox;
 
 Pose at(double x, double y, double z, double angle = 0.0) {
   return Pose(Eigen::Translation3d(x, y, z) * Eigen::AngleAxisd(angle, Vec3(1, 2, 3).normalized()));

@@ -15,6 +15,7 @@
 #include "adsd/distance.h"
 #include "adsd/mesh_hierarchy.h"
 #include "adsd/shapes.h"
+#include "open_box.h"
 #include "oracle.h"
 #include "random_geometry.h"
 
@@ -37,17 +38,7 @@ Mesh withTree(Mesh mesh) {
   return mesh;
 }
 
-/// A box with the two triangles of its +x face left out: on its hull's boundary, not closed.
-Mesh openBox(double half) {
-  const Mesh closed = shapes::box(Vec3(half, half, half));
-  std::vector<TriangleIndices> kept;
-  for (std::size_t t = 0; t < closed.triangleCount(); ++t) {
-    bool onPlusX = true;
-    for (int k = 0; k < 3; ++k) onPlusX = onPlusX && closed.corner(t, k).x() > 0.5 * half;
-    if (!onPlusX) kept.push_back(closed.triangles()[t]);
-  }
-  return Mesh(closed.vertices(), std::move(kept), "open box");
-}
+using testing::openBox;
 
 /// B turned by \p rotation and moved along unit \p u so that the two vertex sets' support planes
 /// normal to u are \p gap apart: the meshes are at least that far apart, and near it.
