@@ -393,10 +393,10 @@ SupportPoint Query::nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std
   SupportPoint best = warm;
   // Boxes waiting to be opened, each with its reach along d, worked out once when its parent is
   // opened (half of the search's cost was the same reach worked out twice). Depth first with the
-  // nearer child on top leaves at most one sibling per level waiting, and a tree's levels are
-  // bounded by its halving (MeshHierarchy::kMaxTreeLevels). Two plain arrays: a vector of {node, reach} pairs
-  // was written field by field and read back whole, a store-forwarding stall on every push
-  // (perf annotate: a fifth of the search's samples).
+  // nearer child on top leaves at most one sibling per level waiting, and a tree has at most
+  // MeshHierarchy::kMaxTreeLevels levels. Two plain arrays: a vector of {node, reach} pairs was
+  // written field by field and read back whole, a store-forwarding stall on every push (perf
+  // annotate: a fifth of the search's samples).
   std::int32_t waitingNode[MeshHierarchy::kMaxTreeLevels + 2];
   double waitingReach[MeshHierarchy::kMaxTreeLevels + 2];
   waitingNode[0] = node;
