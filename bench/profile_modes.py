@@ -20,6 +20,9 @@ Each of our symbols falls in one stage by its name:
                      trianglesFartherThan, trianglesNearBox)
   triangle distance  the exact triangle-triangle distances (triangleDistanceUpTo and its helpers,
                      testLeafPair)
+  hulls              GJK on node pairs and convex parts, its support searches and the triangle
+                     pair it measures (hullBound, gjkOnNodes, nodeSupport, convexNodesBound,
+                     settleConvexPair and their helpers)
   other              anything else, listed with --verbose
 Inlining moves work between symbols, so the stages are approximate. Every mode makes the same
 queries (scenes x poses x repeat) and perf samples at a fixed rate, so a mode's sample count is
@@ -38,6 +41,8 @@ import sys
 import tempfile
 
 STAGES = [
+    ("hulls", re.compile(r"nodeSupport|hullBound|gjkOnNodes|convexNodesBound|measureAtHullPoints|settleConvexPair|"
+                         r"runGjk|closestPointOfSimplex|nearestTriangle|pointTriangleDistance2|supportVertex")),
     ("queue", re.compile(r"_heap<.*PendingNodePair|PendingNodePair.*_heap")),
     ("triangle filters", re.compile(r"triangleFartherFromBox|trianglesFartherThan|trianglesNearBox")),
     ("triangle distance", re.compile(r"triangleDistance|closestOn|segmentPiercesFace|Face::Face|testLeafPair|"
