@@ -190,55 +190,56 @@ MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
   order_.resize(mesh.triangleCount());
   std::iota(order_.begin(), order_.end(), 0u);
   nodes_.reserve(2 * (mesh.triangleCount() / kLeafTriangles + 1));
-  std::uint32_t components = 0;
-  component_ = triangleComponents(mesh, components);
-  componentSize_.assign(components, 0);
-  componentCentroid_.assign(components, Vec3::Zero());
+  Components components;
+  std::uint32_t count = 0;
+  components.ofTriangle = triangleComponents(mesh, count);
+  components.size.assign(count, 0);
+  components.centroid.assign(count, Vec3::Zero());
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    ++componentSize_[component_[t]];
-    componentCentroid_[component_[t]] += mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2);
+    const std::uint32_t c = components.ofTriangle[t];
+    ++components.size[c];
+    components.centroid[c] += mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2);
   }
-  for (std::uint32_t c = 0; c < components; ++c) componentCentroid_[c] /= 3.0 * componentSize_[c];
+  for (std::uint32_t c = 0; c < count; ++c) components.centroid[c] /= 3.0 * components.size[c];
   std::vector<std::uint32_t> marks(mesh.vertices().size(), UINT32_MAX);
-  build(mesh, 0, static_cast<std::uint32_t>(mesh.triangleCount()), 1, marks);
+  build(mesh, components, 0, static_cast<std::uint32_t>(mesh.triangleCount()), 1, marks);
 }
 
-void MeshHierarchy::classifyComponent(const Mesh& mesh, Node& node) const {
-  node.span = ComponentSpan::part;
-  node.convexSolid = 0;
-  const std::uint32_t c = component_[order_[node.t0]];
+MeshHierarchy::ComponentSpan MeshHierarchy::spanOf(const Components& components, const Node& node) const {
+  const std::uint32_t c = components.ofTriangle[order_[node.t0]];
   for (std::uint32_t i = node.t0; i < node.t1; ++i) {
-    if (component_[order_[i]] != c) {
-      node.span = ComponentSpan::several;
-      return;
-    }
+    if (components.ofTriangle[order_[i]] != c) return ComponentSpan::several;
   }
-  if (componentSize_[c] != node.t1 - node.t0) return;
-  node.span = ComponentSpan::whole;
+  return components.size[c] == node.t1 - node.t0 ? ComponentSpan::whole : ComponentSpan::part;
+}
+
+bool MeshHierarchy::isConvexSolid(const Mesh& mesh, const Node& node) const {
   // The component's distinct vertices, if few enough for the O(triangles x vertices) check.
   std::vector<Vec3> points;
   std::vector<std::uint32_t> seen;
   for (std::uint32_t i = node.t0; i < node.t1; ++i) {
     for (std::uint32_t v : mesh.triangles()[order_[i]]) {
       if (std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
-      if (seen.size() == kConvexCheckVertices) return;
+      if (seen.size() == kConvexCheckVertices) return false;
       seen.push_back(v);
       points.push_back(mesh.vertices()[v]);
     }
   }
   const std::uint32_t* range = order_.data() + node.t0;
   const std::size_t count = node.t1 - node.t0;
-  node.convexSolid = isClosed(mesh, range, count) &&
-                     pointsOnOneSideOfEveryFace(mesh, range, count, points, 2.0 * node.box.half.maxCoeff());
+  return isClosed(mesh, range, count) &&
+         pointsOnOneSideOfEveryFace(mesh, range, count, points, 2.0 * node.box.half.maxCoeff());
 }
 
-std::uint32_t MeshHierarchy::splitBetweenComponents(std::uint32_t t0, std::uint32_t t1, const Vec3& axis) {
-  const std::uint32_t first = component_[order_[t0]];
-  if (std::all_of(order_.begin() + t0, order_.begin() + t1, [&](std::uint32_t t) { return component_[t] == first; })) {
+std::uint32_t MeshHierarchy::splitBetweenComponents(const Components& components, std::uint32_t t0, std::uint32_t t1,
+                                                    const Vec3& axis) {
+  const std::vector<std::uint32_t>& component = components.ofTriangle;
+  const std::uint32_t first = component[order_[t0]];
+  if (std::all_of(order_.begin() + t0, order_.begin() + t1, [&](std::uint32_t t) { return component[t] == first; })) {
     return t0;
   }
   // Components by their centroids along the axis (ties by number, so each is contiguous).
-  auto key = [&](std::uint32_t t) { return std::make_pair(axis.dot(componentCentroid_[component_[t]]), component_[t]); };
+  auto key = [&](std::uint32_t t) { return std::make_pair(axis.dot(components.centroid[component[t]]), component[t]); };
   auto before = [&](std::uint32_t s, std::uint32_t t) { return key(s) < key(t); };
   const std::uint32_t mid = t0 + (t1 - t0) / 2;
   std::nth_element(order_.begin() + t0, order_.begin() + mid, order_.begin() + t1, before);
@@ -253,8 +254,8 @@ std::uint32_t MeshHierarchy::splitBetweenComponents(std::uint32_t t0, std::uint3
   return split;
 }
 
-std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, int level,
-                                  std::vector<std::uint32_t>& marks) {
+std::int32_t MeshHierarchy::build(const Mesh& mesh, const Components& components, std::uint32_t t0, std::uint32_t t1,
+                                  int level, std::vector<std::uint32_t>& marks) {
   const std::int32_t index = static_cast<std::int32_t>(nodes_.size());
   nodes_.emplace_back();
   Node node;
@@ -278,7 +279,8 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
     }
   }
   node.repPoint = mesh.corner(node.repTriangle, static_cast<int>(node.repCorner));
-  classifyComponent(mesh, node);
+  node.span = spanOf(components, node);
+  node.convexSolid = node.span == ComponentSpan::whole && isConvexSolid(mesh, node);
   if (t1 - t0 <= kLeafTriangles) {
     node.folded = isFolded(mesh, order_.data(), t0, t1);
     node.v0 = static_cast<std::uint32_t>(leafVertices_.size());
@@ -300,15 +302,15 @@ std::int32_t MeshHierarchy::build(const Mesh& mesh, std::uint32_t t0, std::uint3
   int longest = 0;
   node.box.half.maxCoeff(&longest);
   const Vec3 axis = node.box.axes.col(longest);
-  std::uint32_t mid = level <= kComponentSplitLevels ? splitBetweenComponents(t0, t1, axis) : t0;
+  std::uint32_t mid = level <= kComponentSplitLevels ? splitBetweenComponents(components, t0, t1, axis) : t0;
   if (mid == t0) {
     auto key = [&](std::uint32_t t) { return axis.dot(mesh.corner(t, 0) + mesh.corner(t, 1) + mesh.corner(t, 2)); };
     mid = t0 + (t1 - t0) / 2;
     std::nth_element(order_.begin() + t0, order_.begin() + mid, order_.begin() + t1,
                      [&](std::uint32_t s, std::uint32_t t) { return key(s) < key(t); });
   }
-  node.left = build(mesh, t0, mid, level + 1, marks);
-  node.right = build(mesh, mid, t1, level + 1, marks);
+  node.left = build(mesh, components, t0, mid, level + 1, marks);
+  node.right = build(mesh, components, mid, t1, level + 1, marks);
   nodes_[index] = node;
   return index;
 }
@@ -332,14 +334,13 @@ void MeshHierarchy::refit(const Mesh& mesh) {
       for (const Vec3& c : corners(nodes_[n.right].box)) points.push_back(c);
       fitExtents(n.box, points);
     }
-    if (n.span == ComponentSpan::whole) classifyComponent(mesh, n);  // a deformation may dent a convex part
+    if (n.span == ComponentSpan::whole) n.convexSolid = isConvexSolid(mesh, n);  // a deformation may dent it
   }
 }
 
 std::size_t MeshHierarchy::bytes() const {
   return sizeof(*this) + nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(std::uint32_t) +
-         leafVertices_.capacity() * sizeof(std::uint32_t) + component_.capacity() * sizeof(std::uint32_t) +
-         componentSize_.capacity() * sizeof(std::uint32_t) + componentCentroid_.capacity() * sizeof(Vec3);
+         leafVertices_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace adsd

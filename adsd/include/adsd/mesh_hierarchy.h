@@ -115,22 +115,30 @@ class MeshHierarchy {
   bool onHullBoundary() const { return onHullBoundary_; }  // isClosedConvex(mesh)
 
  private:
-  std::int32_t build(const Mesh& mesh, std::uint32_t t0, std::uint32_t t1, int level, std::vector<std::uint32_t>& marks);
+  /// The mesh's connected components (triangles sharing a vertex, transitively), needed only
+  /// while the tree is built: per triangle its component, per component its triangle count and
+  /// centroid. Refit needs none of it (a node's span cannot change with the vertices).
+  struct Components {
+    std::vector<std::uint32_t> ofTriangle;
+    std::vector<std::uint32_t> size;
+    std::vector<Vec3> centroid;
+  };
+
+  std::int32_t build(const Mesh& mesh, const Components& components, std::uint32_t t0, std::uint32_t t1, int level,
+                     std::vector<std::uint32_t>& marks);
   /// Where to split order_[t0, t1), which holds more than one component, between whole components
   /// (reordering the range): the components ordered along \p axis by their centroids, cut near
   /// the middle triangle. Returns t0 when the range is one component.
-  std::uint32_t splitBetweenComponents(std::uint32_t t0, std::uint32_t t1, const Vec3& axis);
-  /// Sets node.span and node.convexSolid for triangles order_[t0, t1).
-  void classifyComponent(const Mesh& mesh, Node& node) const;
+  std::uint32_t splitBetweenComponents(const Components& components, std::uint32_t t0, std::uint32_t t1,
+                                       const Vec3& axis);
+  /// Where triangles order_[node.t0, node.t1) stand among the components.
+  ComponentSpan spanOf(const Components& components, const Node& node) const;
+  /// Whether a whole component's node is closed and convex (Node::convexSolid).
+  bool isConvexSolid(const Mesh& mesh, const Node& node) const;
 
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> leafVertices_;
-  /// Per triangle, its connected component (triangles sharing a vertex, transitively), and per
-  /// component its triangle count and centroid: kept for refit, which classifies nodes again.
-  std::vector<std::uint32_t> component_;
-  std::vector<std::uint32_t> componentSize_;
-  std::vector<Vec3> componentCentroid_;
   bool onHullBoundary_ = false;
 };
 
