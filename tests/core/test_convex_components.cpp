@@ -4,7 +4,8 @@
 /// (MeshHierarchy::Node::convexSolid), and queries settle a pair of such nodes by GJK and one
 /// triangle pair (convex_pair.cpp, convexNodesBound). Checked against the brute-force binary128
 /// oracle at uniform poses over the environment (in contact, near, far), in the exact, cap and
-/// tolerance modes, before and after a deformation dents one of the solids.
+/// tolerance modes, before and after a deformation dents one of the solids; a convex solid
+/// against the leaves of meshes that are not.
 
 #include <gtest/gtest.h>
 
@@ -161,6 +162,43 @@ TEST(ConvexComponents, AnswersMatchTheOracleAcrossTheEnvironment) {
       EXPECT_GE(gjkSettled, kPoses / 2) << robot.name;
     }
   }
+}
+
+/// A convex solid (a capsule) against meshes that are not convex solids: kept whole against the
+/// nodes outside it, it settles their leaves by GJK (tree_traversal.cpp, convexPairToSettle); in
+/// a room, whose walls are two nested closed convex shells around it, neither is kept whole
+/// against what lies inside its box. Answers against the oracle in every mode.
+TEST(ConvexComponents, AConvexSolidMeetsTheLeavesOfOtherMeshesWhole) {
+  Robot capsule{"capsule", shapes::capsule(0.06, 0.35, 12)};
+  capsule.mesh.buildHierarchy();
+  ASSERT_TRUE(capsule.mesh.hierarchy()->nodes()[0].convexSolid);
+  Mesh torus = shapes::torus(0.8, 0.25, 16, 8);
+  Mesh room = shapes::room(Vec3(1.0, 0.8, 0.6), 0.1, 2);
+  torus.buildHierarchy();
+  room.buildHierarchy();
+  SeededRandom random(5150);
+  int gjkSettled = 0;
+  expectOracleAnswers(torus, capsule, random, gjkSettled);
+  expectOracleAnswers(room, capsule, random, gjkSettled);
+
+  // The same capsule less its last triangle (an end cap's) is not closed, so not a solid, and its
+  // tree is opened against the torus's nodes. Whole, the solid opens far fewer node pairs at the
+  // same poses (counts, not times: the path is taken, not how fast it is).
+  std::vector<TriangleIndices> opened = capsule.mesh.triangles();
+  opened.pop_back();
+  Mesh open(capsule.mesh.vertices(), opened, "open capsule");
+  open.buildHierarchy();
+  ASSERT_FALSE(open.hierarchy()->nodes()[0].convexSolid);
+  std::uint64_t pairsSolid = 0, pairsOpen = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const Vec3 place(random.uniform(-1.2, 1.2), random.uniform(-1.2, 1.2), random.uniform(-0.6, 0.6));
+    const Pose pose(Eigen::Translation3d(place) * random.rotation());
+    const DistanceResult solid = distance(capsule.mesh, pose, torus, Pose::Identity(), DistanceOptions::exactDistance());
+    const DistanceResult notSolid = distance(open, pose, torus, Pose::Identity(), DistanceOptions::exactDistance());
+    pairsSolid += solid.counters.subMeshPairs;
+    pairsOpen += notSolid.counters.subMeshPairs;
+  }
+  EXPECT_LT(2 * pairsSolid, pairsOpen) << "solid " << pairsSolid << " node pairs, open " << pairsOpen;
 }
 
 /// A deformation that pushes one corner of the first box inwards dents it: refit must take its

@@ -56,8 +56,12 @@ TEST(ConvexPairs, SmallClosedConvexMeshesAreOnTheirHullsAndOthersAreNot) {
   EXPECT_FALSE(withTree(openBox(1.0)).hierarchy()->onHullBoundary());  // not closed
   EXPECT_FALSE(withTree(shapes::torus(1.0, 0.3, 8, 6)).hierarchy()->onHullBoundary());
   EXPECT_FALSE(withTree(shapes::cShape(1.0, 0.25, 0.9, 8)).hierarchy()->onHullBoundary());
-  // Convex, but past the size that is checked (kConvexCheckVertices).
-  EXPECT_FALSE(withTree(shapes::sphere(0.5, 32)).hierarchy()->onHullBoundary());
+  // Rounder (482 and 546 vertices), within the size that is checked (kConvexCheckVertices).
+  EXPECT_TRUE(withTree(shapes::sphere(0.5, 32)).hierarchy()->onHullBoundary());
+  EXPECT_TRUE(withTree(shapes::capsule(0.1, 0.5, 32)).hierarchy()->onHullBoundary());
+  // Convex, but past that size.
+  ASSERT_GT(shapes::sphere(0.5, 64).vertices().size(), MeshHierarchy::kConvexCheckVertices);
+  EXPECT_FALSE(withTree(shapes::sphere(0.5, 64)).hierarchy()->onHullBoundary());
 }
 
 struct ConvexCase {

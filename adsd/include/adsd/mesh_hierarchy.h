@@ -47,11 +47,14 @@ class MeshHierarchy {
   /// 60 degrees): the faces of a box meet at 90, a plate's sides at 180, while a capsule of 32
   /// segments turns 11.25 degrees per strip and a fine scanned mesh less still.
   static constexpr double kFoldCosine = 0.5;
-  /// Meshes of at most this many vertices are checked for lying on their convex hull's boundary
-  /// (onHullBoundary): a box obstacle or robot part (8), a primitive cylinder, the bug trap's
-  /// round robot (130), a convex part of a decomposed model. The check costs triangles x vertices
-  /// (at most about 1.3e5 products) when the tree is built or refitted.
-  static constexpr std::size_t kConvexCheckVertices = 256;
+  /// Meshes and components of at most this many vertices (by triangles: twice as many, for a
+  /// closed mesh) are checked for lying on their convex hull's boundary (onHullBoundary,
+  /// Node::convexSolid): a box obstacle or robot part (8), the bug trap's round robot (130), a
+  /// capsule of 32 segments (546), a convex part of a decomposed model or a primitive link of an
+  /// arm. The check searches the subtree's boxes once per triangle when the tree is built or
+  /// refitted (a capsule of 970 vertices: about 3 ms); GJK on the whole mesh scans every vertex
+  /// per support (convex_pair.cpp).
+  static constexpr std::size_t kConvexCheckVertices = 1024;
 
   /// Where a node stands among the mesh's connected components.
   enum class ComponentSpan : std::uint8_t {
@@ -133,8 +136,13 @@ class MeshHierarchy {
                                        const Vec3& axis);
   /// Where triangles order_[node.t0, node.t1) stand among the components.
   ComponentSpan spanOf(const Components& components, const Node& node) const;
-  /// Whether a whole component's node is closed and convex (Node::convexSolid).
-  bool isConvexSolid(const Mesh& mesh, const Node& node) const;
+  /// Whether a whole component's node (its subtree built or refitted) is closed and convex
+  /// (Node::convexSolid).
+  bool isConvexSolid(const Mesh& mesh, std::int32_t index) const;
+  /// onHullBoundary's value once the tree is built or refitted.
+  bool wholeMeshConvex(const Mesh& mesh) const;
+  /// Whether no vertex under node \p index has d.x above \p level.
+  bool nothingBeyond(const Mesh& mesh, std::int32_t index, const Vec3& d, double level) const;
 
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> order_;
