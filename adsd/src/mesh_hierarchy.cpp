@@ -253,8 +253,8 @@ bool MeshHierarchy::isConvexSolid(const Mesh& mesh, std::int32_t index) const {
   // Every triangle's plane with all the node's vertices on one side, as pointsOnOneSideOfEveryFace
   // checks, but each side by a search down the node's subtree that skips boxes within the side:
   // near a face of a convex solid only the boxes around it reach past its plane, so a face costs
-  // a few leaves instead of every vertex (a capsule of 970 vertices: 6 ms to build, 4.6 ms to
-  // refit with the scan over every vertex).
+  // a few leaves instead of every vertex (a capsule of 970 vertices, built and refitted in a
+  // timing loop: 6 and 4.6 ms with the scan over every vertex, 3.2 and 2.6 ms with this).
   const double onPlane = 1e-9 * extent;
   for (std::size_t i = 0; i < count; ++i) {
     const Vec3 a = mesh.corner(range[i], 0);
