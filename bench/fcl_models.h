@@ -8,6 +8,7 @@
 /// index type differs, and it is converted once per mesh (topology never changes, not even for
 /// deforming meshes), outside any timing.
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -88,15 +89,23 @@ struct FclDistanceWork {
 
 /// \brief fclDistance with the traversal's statistics on: the same path fcl::distance takes for two
 /// OBBRSS models (its traversal node, initialised and recursed as FCL's distance function does),
-/// untimed (the statistics cost a little).
+/// untimed (the statistics cost a little). \p relativeError is FCL's rel_err: 0 for the exact
+/// query, 0.01 for the counterpart of our 1 % tolerance. FCL 0.7's mesh traversal node copies
+/// rel_err and abs_err from a default request in its constructor and initialize() leaves them
+/// there, so fcl::distance between two meshes ignores them: the tolerance is set on the node
+/// itself, to count what FCL's rule would skip. That rule (MeshDistanceTraversalNode::canStop)
+/// drops a pair only when its bound passes both the absolute and the relative test, so a
+/// relative tolerance alone takes abs_err = infinity.
 inline FclDistanceWork fclDistanceWork(const FclObbrssModel& a, const Pose& poseA, const FclObbrssModel& b,
-                                       const Pose& poseB) {
+                                       const Pose& poseB, double relativeError = 0.0) {
   fcl::DistanceRequestd request(/*enable_nearest_points=*/true);
-  request.rel_err = 0.0;
-  request.abs_err = 0.0;
+  request.rel_err = relativeError;
+  request.abs_err = relativeError > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
   fcl::DistanceResultd result;
   fcl::detail::MeshDistanceTraversalNodeOBBRSS<double> node;
   fcl::detail::initialize(node, a, poseA, b, poseB, request, result);
+  node.rel_err = request.rel_err;
+  node.abs_err = request.abs_err;
   node.enable_statistics = true;
   fcl::detail::distance(&node);
   return {result.min_distance, node.num_bv_tests, node.num_leaf_tests};
