@@ -207,10 +207,19 @@ MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
 
 bool MeshHierarchy::wholeMeshConvex(const Mesh& mesh) const {
   // The root's flag is isClosedConvex(mesh) on a connected mesh (a mesh of several components is
-  // not its hull's boundary); the vertex count is checked too, since settleConvexPair scans every
-  // vertex of the mesh, referenced or not, per support.
-  return !nodes_.empty() && mesh.vertices().size() <= kConvexCheckVertices &&
-         nodes_[0].span == ComponentSpan::whole && nodes_[0].convexSolid;
+  // not its hull's boundary), but over the vertices the triangles use. settleConvexPair scans
+  // every vertex of the mesh per support and offers the closest support points as a distance
+  // between the surfaces, so a vertex no triangle uses must not exist: off the surface, it would
+  // be offered as a surface point (a box with one stray vertex above it answered 4.24 for 8).
+  if (nodes_.empty() || mesh.vertices().size() > kConvexCheckVertices || nodes_[0].span != ComponentSpan::whole ||
+      !nodes_[0].convexSolid) {
+    return false;
+  }
+  std::vector<bool> used(mesh.vertices().size(), false);
+  for (const TriangleIndices& t : mesh.triangles()) {
+    for (std::uint32_t v : t) used[v] = true;
+  }
+  return std::all_of(used.begin(), used.end(), [](bool u) { return u; });
 }
 
 MeshHierarchy::ComponentSpan MeshHierarchy::spanOf(const Components& components, const Node& node) const {

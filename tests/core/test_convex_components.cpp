@@ -189,16 +189,44 @@ TEST(ConvexComponents, AConvexSolidMeetsTheLeavesOfOtherMeshesWhole) {
   Mesh open(capsule.mesh.vertices(), opened, "open capsule");
   open.buildHierarchy();
   ASSERT_FALSE(open.hierarchy()->nodes()[0].convexSolid);
-  std::uint64_t pairsSolid = 0, pairsOpen = 0;
+  std::uint64_t pairsSolid = 0, pairsOpen = 0, pairsSwapped = 0;
   for (int i = 0; i < kPoses; ++i) {
     const Vec3 place(random.uniform(-1.2, 1.2), random.uniform(-1.2, 1.2), random.uniform(-0.6, 0.6));
     const Pose pose(Eigen::Translation3d(place) * random.rotation());
     const DistanceResult solid = distance(capsule.mesh, pose, torus, Pose::Identity(), DistanceOptions::exactDistance());
     const DistanceResult notSolid = distance(open, pose, torus, Pose::Identity(), DistanceOptions::exactDistance());
+    // The solid as the second mesh: the other frame's transforms, the same traversal.
+    const DistanceResult swapped = distance(torus, Pose::Identity(), capsule.mesh, pose, DistanceOptions::exactDistance());
     pairsSolid += solid.counters.subMeshPairs;
     pairsOpen += notSolid.counters.subMeshPairs;
+    pairsSwapped += swapped.counters.subMeshPairs;
   }
   EXPECT_LT(2 * pairsSolid, pairsOpen) << "solid " << pairsSolid << " node pairs, open " << pairsOpen;
+  EXPECT_LT(2 * pairsSwapped, pairsOpen) << "solid as B " << pairsSwapped << " node pairs, open " << pairsOpen;
+
+  // A non-convex robot inside the room: its nodes lie inside the shells' boxes, where the shells
+  // are split by size as before, not kept whole (a robot inside one convex shell would else be
+  // opened to its leaves against the whole shell). The same room with a triangle taken out of
+  // each shell has no solids: the node pairs must stay of its order.
+  std::vector<TriangleIndices> holed = room.triangles();
+  holed.erase(holed.end() - 1);
+  holed.erase(holed.begin());
+  Mesh openRoom(room.vertices(), holed, "room with holes");
+  openRoom.buildHierarchy();
+  for (const MeshHierarchy::Node& n : openRoom.hierarchy()->nodes()) ASSERT_EQ(n.convexSolid, 0);
+  ASSERT_TRUE(std::any_of(room.hierarchy()->nodes().begin(), room.hierarchy()->nodes().end(),
+                          [](const MeshHierarchy::Node& n) { return n.convexSolid != 0; }));
+  Mesh ring = shapes::torus(0.3, 0.08, 24, 10);
+  ring.buildHierarchy();
+  std::uint64_t pairsInRoom = 0, pairsInOpenRoom = 0;
+  for (int i = 0; i < kPoses; ++i) {
+    const Vec3 place(random.uniform(-0.5, 0.5), random.uniform(-0.4, 0.4), random.uniform(-0.2, 0.2));
+    const Pose pose(Eigen::Translation3d(place) * random.rotation());
+    pairsInRoom += distance(ring, pose, room, Pose::Identity(), DistanceOptions::exactDistance()).counters.subMeshPairs;
+    pairsInOpenRoom +=
+        distance(ring, pose, openRoom, Pose::Identity(), DistanceOptions::exactDistance()).counters.subMeshPairs;
+  }
+  EXPECT_LT(pairsInRoom, 2 * pairsInOpenRoom) << "closed room " << pairsInRoom << ", open " << pairsInOpenRoom;
 }
 
 /// A deformation that pushes one corner of the first box inwards dents it: refit must take its

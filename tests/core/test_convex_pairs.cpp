@@ -64,6 +64,26 @@ TEST(ConvexPairs, SmallClosedConvexMeshesAreOnTheirHullsAndOthersAreNot) {
   EXPECT_FALSE(withTree(shapes::sphere(0.5, 64)).hierarchy()->onHullBoundary());
 }
 
+/// A vertex no triangle uses is not on the surface: a mesh with one above a closed box is not
+/// taken for its hull's boundary, whose support points GJK would offer as surface points (it
+/// answered 4.24 for the boxes' gap of 8 when only the used vertices were checked).
+TEST(ConvexPairs, AVertexNoTriangleUsesIsNotTakenForTheSurface) {
+  const Mesh box = shapes::box(Vec3(1, 1, 1));
+  std::vector<Vec3> vertices = box.vertices();
+  vertices.push_back(Vec3(0, 0, 5));
+  Mesh withStray = withTree(Mesh(vertices, box.triangles(), "box and a stray vertex"));
+  EXPECT_FALSE(withStray.hierarchy()->onHullBoundary());
+  const Mesh other = withTree(shapes::box(Vec3(1, 1, 1)));
+  const Pose above(Eigen::Translation3d(0, 0, 10));
+  for (const DistanceOptions& options :
+       {DistanceOptions::exactDistance(), DistanceOptions::cappedAt(20.0), DistanceOptions::withTolerance(0.0, 0.01)}) {
+    const DistanceResult r = distance(withStray, Pose::Identity(), other, above, options);
+    EXPECT_LE(r.lower, 8.0 + 1e-12);
+    EXPECT_GE(r.upper, 8.0 - 1e-12);
+    EXPECT_GE(r.distance, 8.0 - 1e-12);
+  }
+}
+
 struct ConvexCase {
   std::string name;
   Mesh a, b;
