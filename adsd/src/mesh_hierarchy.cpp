@@ -121,9 +121,6 @@ bool isClosed(const Mesh& mesh, const std::uint32_t* order, std::size_t count) {
   return !edges.empty();
 }
 
-/// Whether every triangle of order[0, count) with an area has all of \p points on one side of its
-/// plane. A point within 1e-9 of \p extent of a plane is on it: only the hull's own faces pass,
-/// and a vertex that rounding left on the wrong side by a hair keeps a real convex part in.
 /// Triangle t's plane as its unit normal and offset (unit.x = offset on it); false when it has
 /// none (no area), and then it constrains nothing.
 bool trianglePlane(const Mesh& mesh, std::uint32_t t, Vec3& unit, double& offset) {
@@ -136,6 +133,9 @@ bool trianglePlane(const Mesh& mesh, std::uint32_t t, Vec3& unit, double& offset
   return true;
 }
 
+/// Whether every triangle of order[0, count) with an area has all of \p points on one side of its
+/// plane. A point within 1e-9 of \p extent of a plane is on it: only the hull's own faces pass,
+/// and a vertex that rounding left on the wrong side by a hair keeps a real convex part in.
 template <class Points>
 bool pointsOnOneSideOfEveryFace(const Mesh& mesh, const std::uint32_t* order, std::size_t count, const Points& points,
                                 double extent) {
@@ -221,10 +221,8 @@ bool MeshHierarchy::wholeMeshConvex(const Mesh& mesh) const {
   // every vertex of the mesh per support and offers the closest support points as a distance
   // between the surfaces, so a vertex no triangle uses must not exist: off the surface, it would
   // be offered as a surface point (a box with one stray vertex above it answered 4.24 for 8).
-  if (nodes_.empty() || mesh.vertices().size() > kConvexCheckVertices || nodes_[0].span != ComponentSpan::whole ||
-      !nodes_[0].convexSolid) {
-    return false;
-  }
+  if (nodes_.empty() || mesh.vertices().size() > kConvexCheckVertices) return false;
+  if (nodes_[0].span != ComponentSpan::whole || !nodes_[0].convexSolid) return false;
   std::vector<bool> used(mesh.vertices().size(), false);
   for (const TriangleIndices& t : mesh.triangles()) {
     for (std::uint32_t v : t) used[v] = true;
@@ -268,7 +266,7 @@ bool MeshHierarchy::isConvexSolid(const Mesh& mesh, std::int32_t index) const {
   if (count > 2 * kConvexCheckVertices) return false;
   const std::uint32_t* range = order_.data() + node.t0;
   const double extent = 2.0 * node.box.half.maxCoeff();
-  if (!(extent > 0.0) || !std::isfinite(extent) || !isClosed(mesh, range, count)) return false;
+  if (!(extent > 0.0) || !std::isfinite(extent)) return false;
   // Every triangle's plane with all the node's vertices on one side, as pointsOnOneSideOfEveryFace
   // checks, but each side by a search down the node's subtree that skips boxes within the side:
   // near a face of a convex solid only the boxes around it reach past its plane, so a face costs
@@ -283,7 +281,9 @@ bool MeshHierarchy::isConvexSolid(const Mesh& mesh, std::int32_t index) const {
       return false;
     }
   }
-  return true;
+  // Closed last: refit checks every whole component again, and a part that is not convex fails
+  // above at its first folding face, before the edges are sorted.
+  return isClosed(mesh, range, count);
 }
 
 std::uint32_t MeshHierarchy::splitBetweenComponents(const Components& components, std::uint32_t t0, std::uint32_t t1,

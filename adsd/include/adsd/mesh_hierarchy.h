@@ -52,8 +52,8 @@ class MeshHierarchy {
   /// Node::convexSolid): a box obstacle or robot part (8), the bug trap's round robot (130), a
   /// capsule of 32 segments (546), a convex part of a decomposed model or a primitive link of an
   /// arm. The check searches the subtree's boxes once per triangle when the tree is built or
-  /// refitted (a capsule of 970 vertices: about 3 ms, timed by building it in a loop); GJK on the whole mesh scans every vertex
-  /// per support (convex_pair.cpp).
+  /// refitted (a capsule of 970 vertices: about 3 ms, timed by building it in a loop); GJK on
+  /// the whole mesh scans every vertex per support (convex_pair.cpp).
   static constexpr std::size_t kConvexCheckVertices = 1024;
 
   /// Where a node stands among the mesh's connected components.
@@ -115,7 +115,7 @@ class MeshHierarchy {
   /// convex hull's boundary (a box, a convex part). Between two such meshes the distance is their
   /// hulls' while the hulls are apart (GJK on the vertices), and queries try that first
   /// (convex_pair.cpp), which proves it or leaves the query to the traversal.
-  bool onHullBoundary() const { return onHullBoundary_; }  // isClosedConvex(mesh)
+  bool onHullBoundary() const { return onHullBoundary_; }  // wholeMeshConvex
 
  private:
   /// The mesh's connected components (triangles sharing a vertex, transitively), needed only
