@@ -282,14 +282,24 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
       spec.seed = random.next();
       spec.minGapFraction = band.minFraction;
       spec.maxGapFraction = band.maxFraction;
-      band.poses = adsd::bench::makeClosePoses(a, b, spec, gap, [](const Pose&, const Pose&) { return true; });
+      try {
+        band.poses = adsd::bench::makeClosePoses(a, b, spec, gap, [](const Pose&, const Pose&) { return true; });
+      } catch (const std::runtime_error& e) {
+        // A pair given by --pairs may leave no room for a band either: said, and left out.
+        std::printf("%-24s %-9s not drawn: %s\n", sceneName.c_str(), band.name.c_str(), e.what());
+      }
     }
   }
   if (planning) {
     bands.push_back({"uniform", 0, 0, uniformStates(b.bounds(), planar, o.poses, random, nullptr)});
     bands.push_back({"collision", 0, 0, uniformStates(b.bounds(), planar, o.poses, random, &gap)});
   } else {
-    bands.push_back({"collision", 0, 0, collidingPairPoses(a, b, o.poses, random, gap)});
+    bands.push_back({"collision", 0, 0, {}});
+    try {
+      bands.back().poses = collidingPairPoses(a, b, o.poses, random, gap);
+    } catch (const std::runtime_error& e) {
+      std::printf("%-24s %-9s not drawn: %s\n", sceneName.c_str(), "collision", e.what());
+    }
   }
 
   int status = 0;

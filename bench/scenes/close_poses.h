@@ -59,6 +59,35 @@ inline double referenceLength(const Mesh& a, const Mesh& b) {
   return std::max(a.bounds().diagonal().norm(), b.bounds().diagonal().norm());
 }
 
+/// Steps of bracketFromOutside's march before it gives up on a line.
+constexpr int kPlacementMarchSteps = 600;
+
+/// Brackets the outermost crossing of the target gap along B's approach line, for a drawing whose
+/// centres coinciding leave the meshes apart (a small mesh inside a large closed one: the dragon
+/// at the centre of a bunny 80 times its size). B comes in from \p hi, where the gap exceeds the
+/// target, in steps of the gap's excess over the target: moving B by s changes the gap by at most
+/// s, so no step passes a crossing. Steps are at least hi / 512, and bisection finishes from the
+/// first bracket. On success [lo, hi] holds a crossing with gap(lo) < target <= gap(hi); false
+/// when the line never comes within the target.
+template <typename PlaceB>
+bool bracketFromOutside(const GapFunction& gap, const Pose& poseA, const PlaceB& placeB, double target, double& lo,
+                        double& hi, ClosePoseStats& stats) {
+  const double minStep = hi / 512.0;
+  double outside = hi;
+  for (int step = 0; step < kPlacementMarchSteps; ++step) {
+    ++stats.gapEvaluations;
+    const double excess = gap(poseA, placeB(outside)) - target;
+    if (excess < 0.0) {
+      lo = outside;
+      return true;
+    }
+    hi = outside;
+    outside -= std::max(excess, minStep);
+    if (outside < 0.0) return false;
+  }
+  return false;
+}
+
 /// \brief Draws poses where B, turned at random, approaches A (turned at random) along a random
 /// line through A's bounding-box centre, stopping where the gap equals a target drawn log-uniform
 /// from the spec's band. Both meshes rotate about their bounding-box centres; A's centre sits at
@@ -68,7 +97,8 @@ inline double referenceLength(const Mesh& a, const Mesh& b) {
 /// centres coincide (for our scenes the meshes then intersect, gap 0 < target); beyond
 /// s = rA + rB + L the bounding spheres are L apart (gap > target). The gap is continuous in s, so
 /// a crossing exists whenever gap(0) < target; the bisection keeps gap(s_hi) >= target and
-/// returns s_hi. Drawings whose hulls do not overlap are rejected. Throws std::runtime_error if
+/// returns s_hi. Where gap(0) >= target (B inside a large closed A), bracketFromOutside finds the
+/// first crossing coming in from s_hi. Drawings whose hulls do not overlap are rejected. Throws std::runtime_error if
 /// fewer than spec.count poses are found within spec.maxAttempts drawings.
 inline std::vector<PosePair> makeClosePoses(const Mesh& a, const Mesh& b, const ClosePoseSpec& spec,
                                             const GapFunction& gap, const HullOverlapFunction& hullsOverlap,
@@ -104,7 +134,7 @@ inline std::vector<PosePair> makeClosePoses(const Mesh& a, const Mesh& b, const 
 
     double lo = 0.0, hi = 1.1 * (radiusA + radiusB) + length;
     ++local.gapEvaluations;
-    if (gap(pair.a, placeB(lo)) >= target) {
+    if (gap(pair.a, placeB(lo)) >= target && !bracketFromOutside(gap, pair.a, placeB, target, lo, hi, local)) {
       ++local.rejectedNoCrossing;
       continue;
     }
