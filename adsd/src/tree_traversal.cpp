@@ -42,7 +42,7 @@ inline double boxSize2(const OrientedBox& box) { return box.half.squaredNorm(); 
 /// GJK iterations a node pair's hull bound may take (hullBound): its lower bound holds at any
 /// iteration, and the first few do most of the tightening.
 constexpr int kHullBoundIterations = 3;
-/// Node pairs with fewer triangles than this on either side are left to boxes and triangles:
+/// Node pairs with fewer triangles than this on both sides are left to boxes and triangles:
 /// there GJK's support descents cost more than the few pairs they could save.
 constexpr std::uint32_t kHullBoundMinTriangles = 8;
 
@@ -52,10 +52,14 @@ constexpr std::uint32_t kHullBoundMinTriangles = 8;
 /// sides of sub-meshes seen from afar are on their hulls), so one GJK run can drop a pair that
 /// the boxes, fat around curved sub-meshes, would have split down to the leaves, and a tolerance
 /// query can settle it within its tolerance. Closer pairs' hulls overlap or nearly, and GJK
-/// there is cost without a bound.
+/// there is cost without a bound. One side may be a leaf of a few triangles when the other is
+/// larger: a coarse mesh's leaf is a box fat at the scale of a fine mesh far from it, which boxes
+/// alone opened down to its leaves against it (the dragon 60 times smaller than the bunny, far
+/// band: 44 484 node pairs per query before, 259 after; the man and the bunny, mid: 1185 us per
+/// query before, 273 after).
 inline bool worthHullBound(const MeshHierarchy::Node& na, const MeshHierarchy::Node& nb, double lower) {
-  return lower > na.box.radius + nb.box.radius && na.t1 - na.t0 >= kHullBoundMinTriangles &&
-         nb.t1 - nb.t0 >= kHullBoundMinTriangles;
+  return lower > na.box.radius + nb.box.radius &&
+         std::max(na.t1 - na.t0, nb.t1 - nb.t0) >= kHullBoundMinTriangles;
 }
 
 /// How many levels below a convex solid partsAsLargeAsWhole looks, and how large (boxSize2) the

@@ -20,6 +20,7 @@
 
 #include "adsd/distance.h"
 #include "adsd/error.h"
+#include "adsd/mesh_hierarchy.h"
 #include "adsd/shapes.h"
 #include "oracle.h"
 #include "random_geometry.h"
@@ -437,6 +438,40 @@ TEST(MeshDistance, WitnessHintsChangeNoAnswer) {
     }
     EXPECT_LT(warmPairs, coldPairs) << (trees ? "trees" : "from scratch");
   }
+}
+
+/// A small, finely meshed knot far (1 to 4 length units, beyond its own size) above a large,
+/// coarse ring: a leaf of the ring is a few triangles larger than the whole knot. The leaf's box is fat at the knot's
+/// scale, so box bounds alone opened the knot's tree down to its leaves against every leaf near
+/// it; the leaf against a knot node is bounded by GJK on their hulls (tree_traversal.cpp,
+/// worthHullBound), whose near sides seen from afar are surface. Answers against the oracle; the
+/// node pairs per query must stay below the knot's leaf count (counts, not times: 264 per query
+/// with the hull bound, 1578 with boxes alone).
+TEST(MeshDistance, AFineMeshFarFromACoarseOneIsBoundedByHulls) {
+  Mesh knot = shapes::knottedTube(0.05, 0.02, 2, 3, 160, 10);
+  Mesh ring = shapes::torus(6.0, 2.0, 48, 24);
+  knot.buildHierarchy();
+  ring.buildHierarchy();
+  const std::size_t knotLeaves = (knot.triangleCount() + MeshHierarchy::kLeafTriangles - 1) / MeshHierarchy::kLeafTriangles;
+  SeededRandom random(4242);
+  const int poses = kPosesPerPair / 10;
+  std::uint64_t pairs = 0;
+  for (int i = 0; i < poses; ++i) {
+    // Above the ring's tube (its top at height 2), 1 to 4 beyond its surface.
+    const double angle = random.uniform(0.0, 2.0 * M_PI), lift = 2.0 + random.uniform(1.0, 4.0);
+    const Pose poseKnot(Eigen::Translation3d(6.0 * std::cos(angle), 6.0 * std::sin(angle), lift) * random.rotation());
+    const oracle::MeshPairDistance truth = oracle::meshDistance(knot, poseKnot, ring, Pose::Identity());
+    const double allowed = kPromisedAccuracy * sceneDiagonal(knot, poseKnot, ring, Pose::Identity());
+    SCOPED_TRACE("pose " + std::to_string(i) + ", oracle " + std::to_string(truth.value));
+    const DistanceResult exact = distance(knot, poseKnot, ring, Pose::Identity(), DistanceOptions::exactDistance());
+    ASSERT_EQ(exact.status, DistanceStatus::exact);
+    EXPECT_NEAR(exact.distance, truth.value, allowed);
+    const DistanceResult swapped = distance(ring, Pose::Identity(), knot, poseKnot, DistanceOptions::exactDistance());
+    EXPECT_NEAR(swapped.distance, truth.value, allowed);
+    pairs += exact.counters.subMeshPairs + swapped.counters.subMeshPairs;
+  }
+  const double perQuery = static_cast<double>(pairs) / (2.0 * poses);
+  EXPECT_LT(perQuery, static_cast<double>(knotLeaves)) << "node pairs per query, knot of " << knotLeaves << " leaves";
 }
 
 }  // namespace
