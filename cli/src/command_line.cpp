@@ -1,6 +1,9 @@
 #include "adsd/cli/command_line.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <utility>
 
@@ -17,6 +20,26 @@ po::typed_value<std::vector<std::string>>* values(const char* name) {
 std::optional<std::string> Arguments::text(const std::string& name) const {
   if (!has(name)) return std::nullopt;
   return map_[name].as<std::string>();
+}
+
+std::optional<std::string> Arguments::outputFile(const std::string& name) const {
+  const std::optional<std::string> file = text(name);
+  if (!file) return std::nullopt;
+  const std::string option = "--" + name + ": ";
+  if (file->empty()) throw UsageError(option + "expected a file name, got ''");
+  std::error_code ec;
+  if (std::filesystem::is_directory(*file, ec)) throw UsageError(option + "'" + *file + "' is a directory, not a file");
+  std::filesystem::path directory = std::filesystem::path(*file).parent_path();
+  if (directory.empty()) directory = ".";
+  if (!std::filesystem::is_directory(directory, ec)) {
+    throw UsageError(option + "'" + *file + "': directory '" + directory.string() + "' does not exist");
+  }
+  // Written through a temporary name in the same directory, then renamed: the directory itself
+  // must be writable.
+  if (::access(directory.c_str(), W_OK) != 0) {
+    throw UsageError(option + "'" + *file + "': directory '" + directory.string() + "' is not writable");
+  }
+  return file;
 }
 
 std::vector<std::string> Arguments::texts(const std::string& name) const {

@@ -10,6 +10,7 @@
 // joint space with the same options: the planner defaults to rrtconnect, the time to the request's
 // allowed_planning_time, the path file has a "# joints: ..." header and one line of joint values
 // per state, and --html writes the arm's viewer page (arm_viewer_html.h).
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -112,8 +113,8 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
   // OMPL's generator takes no seed 0.
   if (const auto seed = given->whole("seed", 1, 4294967295ULL)) a.seed = static_cast<std::uint32_t>(*seed);
   a.simplify = !given->has("no-simplify");
-  a.pathFile = given->text("path");
-  a.htmlFile = given->text("html");
+  a.pathFile = given->outputFile("path");
+  a.htmlFile = given->outputFile("html");
   // Last: finding the shipped problems may fail, and the options' errors come first.
   a.problem = problems.empty() ? defaultProblemFile() : problems.front();
   return a;
@@ -278,17 +279,26 @@ int planArm(const PlanArguments& a) {
   const auto& space = problem.spaceInformation()->getStateSpace();
   std::printf("path        %zu states, length %.6g (joint space: the sum of the joints' absolute changes)\n",
               path.getStateCount(), measures.length);
-  std::printf("clearance   min %.6g m, mean %.6g m (%s, at %zu states: the path interpolated every %g in joint space)\n",
-              measures.minClearance, measures.meanClearance, a.checker == CheckerKind::adsd ? "exact" : "FCL's distance",
-              measures.statesSampled, kArmClearanceStep);
+  // With no obstacle and no link pair to check, no distance is measured: said, not printed as inf.
+  if (std::isfinite(measures.minClearance)) {
+    std::printf("clearance   min %.6g m, mean %.6g m (%s, at %zu states: the path interpolated every %g in joint space)\n",
+                measures.minClearance, measures.meanClearance, a.checker == CheckerKind::adsd ? "exact" : "FCL's distance",
+                measures.statesSampled, kArmClearanceStep);
+  } else {
+    std::printf("clearance   none measured: nothing for the links to collide with\n");
+  }
   // What the clearance objective maximizes, the clearance to the obstacles, measured with either
   // objective so that runs with both compare.
   std::shared_ptr<const ArmMotionClearance> objective = problem.objectiveClearance();
   if (!objective) objective = std::make_shared<const ArmMotionClearance>(problem.checker());
   const ArmPathClearance obstacles = measureArmPathClearance(path, *objective, kArmClearanceStep);
-  std::printf("obstacles   clearance min %.6g m, mean %.6g m (exact, the same states; the links against the obstacles, "
-              "what --objective clearance maximizes), certified >= %.6g m along the path\n",
-              obstacles.min, obstacles.mean, obstacles.certifiedMin);
+  if (std::isfinite(obstacles.min)) {
+    std::printf("obstacles   clearance min %.6g m, mean %.6g m (exact, the same states; the links against the obstacles, "
+                "what --objective clearance maximizes), certified >= %.6g m along the path\n",
+                obstacles.min, obstacles.mean, obstacles.certifiedMin);
+  } else {
+    std::printf("obstacles   none in the scene\n");
+  }
   if (a.pathFile) {
     std::vector<std::string> joints;
     for (const std::size_t j : problem.model().activeJoints) joints.push_back(problem.model().joints[j].name);

@@ -76,7 +76,7 @@ std::optional<ViewArguments> parseArguments(const std::vector<std::string>& args
     throw cli::UsageError("more than one problem file ('" + problems[0] + "', '" + problems[1] + "')");
   }
   a.pathFile = given->text("path");
-  const std::optional<std::string> html = given->text("html");
+  const std::optional<std::string> html = given->outputFile("html");
   if (!html) throw cli::UsageError("--html OUT.html is required");
   a.html = *html;
   // Last: finding the shipped problems may fail, and the options' errors come first.
@@ -106,7 +106,8 @@ void readPathLines(const std::string& file,
       onComment(line.substr(first + 1), where);
       continue;
     }
-    std::istringstream words(line);
+    // A comment may follow a state's numbers on its line.
+    std::istringstream words(line.substr(0, line.find('#')));
     std::vector<double> values;
     std::string word;
     while (words >> word) {
@@ -119,6 +120,18 @@ void readPathLines(const std::string& file,
     ++states;
   }
   if (states == 0) throw InputError(file + ": no states (only comments or blank lines)");
+}
+
+/// The position bounds of \p si's rigid-body space, as "x in [a, b], y in [c, d]...".
+std::string boundsText(const ob::SpaceInformation& si, RigidBodySpace space) {
+  const ob::RealVectorBounds& bounds =
+      space == RigidBodySpace::se2 ? si.getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
+                                   : si.getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
+  std::ostringstream text;
+  for (std::size_t i = 0; i < bounds.low.size(); ++i) {
+    text << (i ? ", " : "") << "xyz"[i] << " in [" << bounds.low[i] << ", " << bounds.high[i] << "]";
+  }
+  return text.str();
 }
 
 /// Reads a rigid body's path file into states of \p si's space; errors name the file and line.
@@ -137,7 +150,8 @@ ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::S
     if (space == RigidBodySpace::se2) {
       auto* s = state->as<ob::SE2StateSpace::StateType>();
       s->setXY(values[0], values[1]);
-      s->setYaw(values[2]);
+      // Other tools write yaw in [0, 2 pi) or unwrapped; OMPL's SE(2) takes it in [-pi, pi] only.
+      s->setYaw(std::remainder(values[2], 2.0 * M_PI));
     } else {
       const double norm = std::sqrt(values[3] * values[3] + values[4] * values[4] + values[5] * values[5] +
                                     values[6] * values[6]);
@@ -150,6 +164,11 @@ ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::S
       s->rotation().y = values[4] / norm;
       s->rotation().z = values[5] / norm;
       s->rotation().w = values[6] / norm;
+    }
+    // A state outside the problem's bounds is not one of its states (and one far outside would
+    // fail later, in a distance query that cannot name this line).
+    if (!si->satisfiesBounds(state.get())) {
+      throw InputError(where + "the state lies outside the problem's bounds (" + boundsText(*si, space) + ")");
     }
     path.append(state.get());
   };
@@ -214,8 +233,12 @@ int viewArm(const ViewArguments& a) {
                                              a.pathFile ? "path " + *a.pathFile : std::string("start and goal, no path"));
   std::printf("problem     %s (arm %s, %zu joints, %s)\n", problem.name().c_str(), problem.model().name.c_str(),
               problem.model().dof(), a.problem.c_str());
-  std::printf("clearance   min %.6g m (exact, over %zu states%s)\n", s.minClearance, s.states,
-              path ? ": the path interpolated as `adsd plan` measures it" : ": the start and the goal");
+  if (std::isfinite(s.minClearance)) {
+    std::printf("clearance   min %.6g m (exact, over %zu states%s)\n", s.minClearance, s.states,
+                path ? ": the path interpolated as `adsd plan` measures it" : ": the start and the goal");
+  } else {
+    std::printf("clearance   none measured: nothing for the links to collide with\n");
+  }
   std::printf("viewer      %s (%.0f kB)\n", a.html.c_str(), static_cast<double>(s.bytes) / 1000.0);
   return 0;
 }

@@ -58,6 +58,10 @@ class Arguments {
   bool has(const std::string& name) const { return map_.count(name) > 0; }
   /// The value of option \p name; nullopt when it was not given.
   std::optional<std::string> text(const std::string& name) const;
+  /// Option \p name as a file the program will write once its work is done: checked now, so that
+  /// a run of minutes does not end in "cannot write". Throws UsageError when the name is empty,
+  /// names a directory, or its directory does not exist or cannot be written.
+  std::optional<std::string> outputFile(const std::string& name) const;
   /// Every value of a repeated option, or the positional arguments (CommandLine::positional).
   std::vector<std::string> texts(const std::string& name) const;
   /// Option \p name as a whole number in [\p min, \p max] (numbers.h's parseWhole).

@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""Output files checked before the work, and path files read as other tools write them.
+
+  output_and_path_files.py ADSD OFFICE_CFG
+
+OFFICE_CFG: the shipped office problem as the build writes it (its meshes beside it).
+
+`adsd plan --path/--html` and `adsd view --html` naming an empty name, a directory or a file in a
+directory that does not exist: exit status 2 with one line on stderr naming the option, nothing on
+stdout (no plan was made first). `adsd view` of a rigid problem's path file: a yaw outside
+[-pi, pi] (as tools that write [0, 2 pi) or unwrapped angles give it) and a comment after a
+state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
+no page is written.
+"""
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+    return ok
+
+
+def run(adsd, args, cwd):
+    return subprocess.run([adsd] + args, capture_output=True, text=True, timeout=300, cwd=cwd)
+
+
+def expect_refused(adsd, args, cwd, start):
+    r = run(adsd, args, cwd)
+    label = " ".join(args)
+    check(r.returncode == 2, f"{label}: exit {r.returncode}, expected 2 ({r.stderr.strip()})")
+    check(r.stdout == "", f"{label}: printed on stdout before refusing: {r.stdout[:200]!r}")
+    check(r.stderr.count("\n") == 1 and r.stderr.startswith(start),
+          f"{label}: stderr {r.stderr!r}, expected one line starting {start!r}")
+
+
+def main():
+    adsd, office = sys.argv[1], sys.argv[2]
+    with tempfile.TemporaryDirectory() as work:
+        missing = os.path.join(work, "no_such_dir", "x.path")
+        for command, option in (("plan", "--path"), ("plan", "--html"), ("view", "--html")):
+            extra = ["--html", os.path.join(work, "ok.html")] if command == "view" and option != "--html" else []
+            expect_refused(adsd, [command, office, option, missing] + extra, work,
+                           f"adsd {command}: error: {option}: '{missing}': directory '{os.path.dirname(missing)}'"
+                           " does not exist")
+            expect_refused(adsd, [command, office, option, ""] + extra, work,
+                           f"adsd {command}: error: {option}: expected a file name, got ''")
+            expect_refused(adsd, [command, office, option, work] + extra, work,
+                           f"adsd {command}: error: {option}: '{work}' is a directory, not a file")
+
+        page = os.path.join(work, "page.html")
+        turned = os.path.join(work, "turned.path")
+        pathlib.Path(turned).write_text("-6 2.5 0  # the start\n0 0 4\n6 -2.5 7.853981633974483\n")
+        r = run(adsd, ["view", office, "--path", turned, "--html", page], work)
+        check(r.returncode == 0, f"view of yaws outside [-pi, pi]: exit {r.returncode} ({r.stderr.strip()})")
+        check(os.path.isfile(page), "view of yaws outside [-pi, pi]: no page written")
+
+        outside = os.path.join(work, "outside.path")
+        pathlib.Path(outside).write_text("-6 2.5 0\n1e150 0 0\n")
+        os.remove(page)
+        expect_refused(adsd, ["view", office, "--path", outside, "--html", page], work,
+                       f"adsd view: error: {outside}:2: the state lies outside the problem's bounds (x in [-10, 10]")
+        check(not os.path.exists(page), "view of a state outside the bounds wrote a page")
+    for f in failures:
+        print("FAIL:", f)
+    print(f"{len(failures)} failure(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
