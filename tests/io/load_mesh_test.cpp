@@ -572,6 +572,11 @@ TEST(LoadMeshBadInput, MalformedObjStlAndPlyNameTheLine) {
   EXPECT_NE(range.find("range.obj:5: face refers to vertex 9 but the file has 3 vertices"), std::string::npos) << range;
   const std::string back = loadError(dir.write("back.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n"));
   EXPECT_NE(back.find("back.obj:3: face corner '-3' counts back past the first vertex"), std::string::npos) << back;
+  // The most negative long long: negating it to compare with the vertex count would overflow.
+  const std::string farBack =
+      loadError(dir.write("far_back.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9223372036854775808\n"));
+  EXPECT_NE(farBack.find("far_back.obj:4: face corner '-9223372036854775808' counts back past the first vertex"),
+            std::string::npos) << farBack;
   const std::string zero = loadError(dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
   EXPECT_NE(zero.find("zero.obj:4: face corner '0'"), std::string::npos) << zero;
   const std::string far = loadError(dir.write("far.obj", "v 0 0 0\nv 1 0 0\nv 0 -2e75 0\nf 1 2 3\n"));
