@@ -524,6 +524,17 @@ TEST(LoadMeshBadInput, TruncatedBinaryPly) {
   EXPECT_NE(range.find("face 0 refers to vertex 3 but the file has 3 vertices"), std::string::npos) << range;
 }
 
+// Elements without properties take no bytes in binary PLY: 40 of them promising 2^32 - 1
+// instances each were walked instance by instance, for minutes.
+TEST(LoadMesh, BinaryPlyElementsWithoutPropertiesAreSkippedAtOnce) {
+  TempDir dir;
+  std::string empties;
+  for (int k = 0; k < 40; ++k) empties += "element junk" + std::to_string(k) + " 4294967295\n";
+  std::string ply = binaryPly(true);
+  ply.insert(ply.find("element vertex"), empties);
+  EXPECT_EQ(loadMesh(dir.write("empties.ply", ply)).triangleCount(), 1u);
+}
+
 // OFF files that are malformed: each named with its line. (Assimp 5.2's OFF reader, used before
 // issue 16, clamped out-of-range indices and zero-filled missing vertices without a word.)
 TEST(LoadMeshBadInput, MalformedOff) {
