@@ -535,6 +535,24 @@ TEST(LoadMesh, BinaryPlyElementsWithoutPropertiesAreSkippedAtOnce) {
   EXPECT_EQ(loadMesh(dir.write("empties.ply", ply)).triangleCount(), 1u);
 }
 
+// A header promising more than the file holds is reported as the truncation it is, not as "out of
+// memory" after trying to reserve for 2^32 - 2 vertices (100 GB; AddressSanitizer aborted).
+TEST(LoadMeshBadInput, HeaderCountsBeyondTheFileAreTruncations) {
+  TempDir dir;
+  const std::string off = loadError(dir.write("huge.off", "OFF\n4294967294 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(off.find("promises 4294967294 vertices but the file ends after 4"), std::string::npos) << off;
+  const std::string faces = loadError(dir.write("huge_faces.off", "OFF\n3 4294967294 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(faces.find("promises 4294967294 faces but the file ends after 1"), std::string::npos) << faces;
+  const std::string ascii = loadError(dir.write("huge.ply", "ply\nformat ascii 1.0\nelement vertex 4294967294\n"
+                                                            "property float x\nproperty float y\nproperty float z\n"
+                                                            "end_header\n0 0 0\n1 0 0\n0 1 0\n"));
+  EXPECT_NE(ascii.find("ends after 3 of the 4294967294 'vertex' lines"), std::string::npos) << ascii;
+  std::string binary = binaryPly(true);
+  binary.replace(binary.find("element vertex 3"), 16, "element vertex 4294967294");
+  const std::string cut = loadError(dir.write("huge_bin.ply", binary));
+  EXPECT_NE(cut.find("truncated binary PLY: vertex 4 of 4294967294"), std::string::npos) << cut;
+}
+
 // OFF files that are malformed: each named with its line. (Assimp 5.2's OFF reader, used before
 // issue 16, clamped out-of-range indices and zero-filled missing vertices without a word.)
 TEST(LoadMeshBadInput, MalformedOff) {
