@@ -515,6 +515,59 @@ TEST(LoadMeshBadInput, ColladaIndexListThatAssimpWouldReadForever) {
   EXPECT_EQ(loadMesh(dir.write("fine.dae", fine)).triangleCount(), 1u);
 }
 
+// Assimp goes by content when it does not know a file's extension: a PLY file called anything but
+// .ply reached its PLY reader past our checks (SEGV, a hang, an abort), and a COLLADA file not
+// called .dae reached its index-list reader (12.6 GB, then bad_alloc). Content decides now.
+TEST(LoadMeshBadInput, PlyAndColladaOfAnyNameAreChecked) {
+  TempDir dir;
+  const std::string segv =
+      loadError(dir.write("tab_segv", std::string("ply\nformat binary_big_endian 1.0\nend_header\v\0\0\0\3", 48)));
+  EXPECT_NE(segv.find("tab_segv:3: control character 0x0b"), std::string::npos) << segv;
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\n";
+  const std::string noEnd = loadError(dir.write("no_end.mdl", header));
+  EXPECT_NE(noEnd.find("no end_header"), std::string::npos) << noEnd;
+  const std::string emptyFace = loadError(dir.write("empty_face.txt", header + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n"));
+  EXPECT_NE(emptyFace.find("empty_face.txt:14: face 1: a face with no corners"), std::string::npos) << emptyFace;
+
+  const std::string triangles = "<p>0 1 2</p>";
+  std::string dae = colladaWithNodes(R"(<node id="n" name="n"><instance_geometry url="#tri"/></node>)");
+  dae.replace(dae.find(triangles), triangles.size(), "<p>0\"1 2</p>");
+  for (const char* name : {"scene", "scene.xml", "scene.txt"}) {
+    const std::string message = loadError(dir.write(name, dae));
+    EXPECT_NE(message.find(":16: the index list <p> holds"), std::string::npos) << message;
+  }
+  // UTF-16: assimp's XML parser decodes it, so the check reads it with its NUL bytes dropped.
+  std::string utf16 = "\xff\xfe";
+  for (const char c : dae) utf16 += std::string(1, c) + '\0';
+  const std::string wide = loadError(dir.write("wide", utf16));
+  EXPECT_NE(wide.find("wide:16: the index list <p> holds"), std::string::npos) << wide;
+  // A zipped COLLADA: assimp would unzip it; nothing here can check what is inside first.
+  const std::string zae = loadError(dir.write("scene.zae", std::string("PK\3\4", 4) + "scene.dae"));
+  EXPECT_NE(zae.find("zipped COLLADA"), std::string::npos) << zae;
+  const std::string zip = loadError(dir.write("archive", std::string("PK\3\4", 4) + "manifest.xml"));
+  EXPECT_NE(zip.find("zipped COLLADA"), std::string::npos) << zip;
+}
+
+// PLY, OFF and ASCII STL files of any name are read by our readers, exactly (assimp would store
+// the coordinate in float).
+TEST(LoadMesh, PlyOffAndStlOfAnyNameAreReadByTheirContent) {
+  TempDir dir;
+  const std::string v = "0.10000000000000001 1 0";
+  const std::vector<std::string> files = {
+      dir.write("model", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                         "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                             v + "\n0 0 0\n1 0 0\n3 0 1 2\n"),
+      dir.write("shape.dat", "# a comment first\nCOFF\n3 1 0\n" + v + "\n0 0 0\n1 0 0\n3 0 1 2\n"),
+      dir.write("part.txt", "solid p\nfacet normal 0 0 0\nouter loop\nvertex " + v +
+                                "\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid p\n")};
+  for (const std::string& file : files) {
+    const Mesh mesh = loadMesh(file);
+    EXPECT_EQ(mesh.corner(0, 0).x(), 0.10000000000000001) << file;
+  }
+}
+
 TEST(LoadMeshBadInput, TruncatedBinaryPly) {
   TempDir dir;
   const std::string whole = binaryPly(true);

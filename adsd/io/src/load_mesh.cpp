@@ -1,10 +1,8 @@
 #include "adsd/io/load_mesh.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <limits>
 #include <new>
 #include <sstream>
@@ -266,27 +264,24 @@ std::uint64_t countSurfaceFaces(const aiScene& scene, std::uint64_t& lines, std:
   throw InputError(what);
 }
 
-std::string lowerCaseExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 Mesh loadMeshUnguarded(const std::string& path) {
-  detail::requireReadableFile(path);
-  // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
-  // docs/numerics.md for the measurement); everything else goes through assimp, in float.
-  const std::string ext = lowerCaseExtension(path);
-  if (ext == ".obj") return detail::meshFromSoup(detail::readObj(path, detail::readWholeFile(path)), path);
-  if (ext == ".off") return detail::meshFromSoup(detail::readOff(path, detail::readWholeFile(path)), path);
-  if (ext == ".stl") {
+  {
     const std::string bytes = detail::readWholeFile(path);
-    detail::requireCompleteBinaryStl(path, bytes, bytes.size());
-    return detail::meshFromSoup(detail::readStl(path, bytes), path);
-  }
-  if (ext == ".ply") return detail::meshFromSoup(detail::readPly(path, detail::readWholeFile(path)), path);
-  if (ext == ".dae") detail::requireIntegerIndexLists(path, detail::readWholeFile(path));
+    // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
+    // docs/numerics.md for the measurement); everything else goes through assimp, in float.
+    switch (detail::chooseReader(path, bytes)) {
+      case detail::MeshReader::obj: return detail::meshFromSoup(detail::readObj(path, bytes), path);
+      case detail::MeshReader::off: return detail::meshFromSoup(detail::readOff(path, bytes), path);
+      case detail::MeshReader::ply: return detail::meshFromSoup(detail::readPly(path, bytes), path);
+      case detail::MeshReader::stl:
+        detail::requireCompleteBinaryStl(path, bytes, bytes.size());
+        return detail::meshFromSoup(detail::readStl(path, bytes), path);
+      case detail::MeshReader::assimp: break;
+    }
+    // Assimp reads COLLADA by content whatever the file's name, so the check goes by content too.
+    detail::refuseZippedCollada(path, bytes);
+    if (detail::readAsCollada(path, bytes)) detail::requireIntegerIndexLists(path, bytes);
+  }  // the bytes are freed before assimp reads the file itself (it may need files beside it)
 
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, 0);

@@ -198,6 +198,18 @@ class OffReader {
 
 }  // namespace
 
+bool startsWithOffKeyword(std::string_view text) {
+  LineScanner lines(text);
+  std::string_view line;
+  while (lines.next(line)) {
+    const std::vector<std::string_view> tokens = splitWhitespace(withoutComment(line));
+    if (tokens.empty()) continue;
+    bool plain = true;
+    return isOffKeyword(tokens[0], plain);
+  }
+  return false;
+}
+
 PolygonSoup readOff(const std::string& path, std::string_view text) { return OffReader(path, text).run(); }
 
 }  // namespace adsd::io::detail

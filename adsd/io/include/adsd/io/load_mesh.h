@@ -11,7 +11,12 @@ namespace adsd::io {
 
 /// \brief Loads every triangle of the file as one mesh.
 ///
-/// Precision, by format (the extension decides; docs/numerics.md has the measurement):
+/// The reader: .obj, .off, .ply and .stl (any case) go to ours; a file of any other name goes by
+/// its first word ("ply", an OFF keyword, "solid"), else to assimp. Before assimp reads a file,
+/// COLLADA (named .dae or holding "<COLLADA") has its index lists checked and zipped COLLADA
+/// (.zae) is refused, so that no malformed file reaches assimp's readers we know to crash or hang.
+///
+/// Precision, by format (docs/numerics.md has the measurement):
 /// - OBJ, OFF, ASCII PLY, ASCII STL: every coordinate as the double nearest its decimal text
 ///   (std::from_chars), so 17 significant digits come back bit for bit; binary PLY with double
 ///   properties: the doubles as stored.
