@@ -28,7 +28,10 @@ namespace adsd::io {
 /// Polygons become triangles (OBJ, OFF, PLY: fanned from the first corner; assimp: its own
 /// triangulation); line and point elements are dropped; bit-identical vertices are shared and
 /// unreferenced ones dropped, so counts match what assimp made of the same files; no coordinate
-/// is changed. Zero-area triangles are kept.
+/// is changed. Zero-area triangles are kept, but a triangle that repeats another's three vertices
+/// (in any order), or lies on a single vertex that another triangle has, is dropped: it adds no
+/// point, and every tree query visited each copy (100,000 copies of one triangle: over a minute
+/// for 20 queries).
 ///
 /// Throws adsd::InputError, one line starting with the path (and ":LINE" where the format has
 /// lines), for: a missing, unreadable, empty or non-regular file; a malformed line; a truncated
