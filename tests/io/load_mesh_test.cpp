@@ -592,6 +592,21 @@ TEST(LoadMesh, PlyOffAndStlOfAnyNameAreReadByTheirContent) {
   }
 }
 
+// Assimp's ASE and CSM readers answer text they cannot read with a placeholder (8 triangles on one
+// point for "hello world"), which was accepted as the file's mesh.
+TEST(LoadMeshBadInput, AssimpPlaceholderOfOnePointIsRefused) {
+  TempDir dir;
+  for (const char* name : {"hello.ase", "hello.csm"}) {
+    const std::string message = loadError(dir.write(name, "hello world\n"));
+    EXPECT_NE(message.find("assimp made nothing of the file but"), std::string::npos) << message;
+  }
+  // Through assimp too, a repeated triangle is dropped.
+  std::string dae = colladaWithNodes(R"(<node id="n" name="n"><instance_geometry url="#tri"/></node>)");
+  dae.replace(dae.find("<triangles count=\"1\">"), 21, "<triangles count=\"2\">");
+  dae.replace(dae.find("<p>0 1 2</p>"), 12, "<p>0 1 2 2 0 1</p>");
+  EXPECT_EQ(loadMesh(dir.write("twice.dae", dae)).triangleCount(), 1u);
+}
+
 TEST(LoadMeshBadInput, TruncatedBinaryPly) {
   TempDir dir;
   const std::string whole = binaryPly(true);

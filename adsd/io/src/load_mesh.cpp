@@ -15,6 +15,7 @@
 
 #include "adsd/error.h"
 #include "file_checks.h"
+#include "polygon_soup.h"
 
 namespace adsd::io {
 
@@ -264,6 +265,23 @@ std::uint64_t countSurfaceFaces(const aiScene& scene, std::uint64_t& lines, std:
   throw InputError(what);
 }
 
+/// Some of assimp's readers (ASE, CSM) answer a file they cannot make sense of with a placeholder
+/// instead of an error: "hello world" saved as .ase came back as 8 triangles on one point. No file
+/// that describes a surface gives that, so it is refused; our own readers, which invent nothing,
+/// accept a file that is a single point.
+void requireMoreThanOnePoint(const Gathered& gathered, const std::string& path) {
+  const Vec3& first = gathered.vertices[gathered.triangles.front()[0]];
+  for (const TriangleIndices& t : gathered.triangles) {
+    for (const std::uint32_t v : t) {
+      if (gathered.vertices[v] != first) return;
+    }
+  }
+  std::ostringstream where;
+  where << '(' << first.x() << ", " << first.y() << ", " << first.z() << ')';
+  throw InputError(path + ": assimp made nothing of the file but " + std::to_string(gathered.triangles.size()) +
+                   " triangles on the single point " + where.str() + ", not a surface (is it a mesh file?)");
+}
+
 Mesh loadMeshUnguarded(const std::string& path) {
   {
     const std::string bytes = detail::readWholeFile(path);
@@ -308,6 +326,8 @@ Mesh loadMeshUnguarded(const std::string& path) {
 
   Gathered gathered = gatherScene(*scene, path);
   if (gathered.triangles.empty()) throwNoTriangles(path, gathered.lines, gathered.points);
+  requireMoreThanOnePoint(gathered, path);
+  detail::dropRepeatedTriangles(gathered.triangles, gathered.vertices.size());
   return Mesh(std::move(gathered.vertices), std::move(gathered.triangles), path);
 }
 
