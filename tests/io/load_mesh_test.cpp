@@ -666,6 +666,11 @@ TEST(LoadMeshBadInput, MalformedOff) {
   EXPECT_NE(far.find("far.off:4: vertex 1: coordinate 1e+80 is beyond +-1e75"), std::string::npos) << far;
   const std::string binary = loadError(dir.write("binary.off", "OFF BINARY\n"));
   EXPECT_NE(binary.find("binary.off:1: binary OFF is not read"), std::string::npos) << binary;
+  // Data after the last face: the counts do not describe the file (it was accepted, the rest unread).
+  const std::string trailing =
+      loadError(dir.write("trailing.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n\n# fine\nextra junk\n"));
+  EXPECT_NE(trailing.find("trailing.off:9: unexpected 'extra' after the last of the 1 faces"), std::string::npos)
+      << trailing;
 }
 
 // What assimp's OFF reader refused or misread is read as the format means it: a polygon of ten

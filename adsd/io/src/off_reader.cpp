@@ -11,8 +11,9 @@
 // faces, edges), then one vertex per line and one face per line ("n i1 ... in", extra values
 // after the indices ignored). '#' starts a comment anywhere; blank and comment lines are skipped.
 // Refused, with the line: homogeneous (4OFF) and n-dimensional (nOFF) variants and binary OFF,
-// fewer lines than the counts promise, a vertex without three numbers, a non-finite coordinate or
-// one beyond +-1e75 (tolerances.h), a face without its indices, an index out of range.
+// fewer lines than the counts promise or data after the last face, a vertex without three
+// numbers, a non-finite coordinate or one beyond +-1e75 (tolerances.h), a face without its
+// indices, an index out of range.
 
 #include <algorithm>
 #include <charconv>
@@ -119,6 +120,7 @@ class OffReader {
       }
       soup.closePolygon();
     }
+    requireNothingAfterTheFaces(faces);
     return soup;
   }
 
@@ -175,6 +177,18 @@ class OffReader {
         }
         counts.push_back(count);
       }
+    }
+  }
+
+  /// Only blank lines and comments may follow the last face: anything else means the counts do
+  /// not describe the file (a face count too low, two files joined), and reading on would guess.
+  void requireNothingAfterTheFaces(long long faces) {
+    std::string_view line;
+    while (lines_.next(line)) {
+      const std::vector<std::string_view> tokens = splitWhitespace(withoutComment(line));
+      if (tokens.empty()) continue;
+      throw InputError(at() + "unexpected " + quoteToken(tokens[0]) + " after the last of the " +
+                       std::to_string(faces) + " faces the OFF header promises");
     }
   }
 
