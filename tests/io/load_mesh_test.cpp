@@ -673,6 +673,15 @@ TEST(LoadMeshBadInput, MalformedOff) {
       << trailing;
 }
 
+// Classic Mac OS text, CR alone ending each line, was read as one line ("no 'f' lines").
+TEST(LoadMesh, CarriageReturnAloneEndsLines) {
+  TempDir dir;
+  EXPECT_EQ(loadMesh(dir.write("cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r")).triangleCount(), 1u);
+  EXPECT_EQ(loadMesh(dir.write("cr.off", "OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2")).triangleCount(), 1u);
+  const std::string word = loadError(dir.write("word_cr.obj", "v 0 0 0\rv 1 x 0\rv 0 1 0\rf 1 2 3\r"));
+  EXPECT_NE(word.find("word_cr.obj:2: vertex 2"), std::string::npos) << word;
+}
+
 // What assimp's OFF reader refused or misread is read as the format means it: a polygon of ten
 // corners (assimp dropped faces of more than nine) and a comment between vertices (assimp read
 // it as a vertex).
