@@ -6,7 +6,7 @@
 /// | name              | meshes                                   | queries                         |
 /// |-------------------|------------------------------------------|---------------------------------|
 /// | cows              | CGAL cow.off × 2 (5 804 each)            | rigid close poses               |
-/// | stick_dragon      | our capsule (1 024) × npm dragon res4 (11 102) | rigid close poses         |
+/// | stick_dragon      | our capsule (1 024) × npm dragon res4 (10 600: 11 102 less 502 repeats) | rigid close poses |
 /// | teddies_deforming | CGAL bear.off × 2 (27 648 each)          | consecutive frames of a smooth  |
 /// |                   |                                          | deformation, B swaying close    |
 /// | camels            | CGAL camel.off × 2 (19 536 each)         | rigid close poses               |

@@ -11,6 +11,9 @@
 // (&#48;), with CDATA or with a comment inside is refused too, though an XML parser would decode
 // it; no exporter writes indices that way, and refusing is safe where guessing is not.
 
+#include <algorithm>
+#include <cctype>
+#include <iterator>
 #include <string>
 #include <string_view>
 
@@ -51,7 +54,37 @@ int lineOf(std::string_view text, std::size_t at) {
 
 }  // namespace
 
+bool readAsCollada(const std::string& path, std::string_view bytes) {
+  if (lowerCaseExtension(path) == ".dae") return true;
+  static const char kTag[] = "<collada";
+  std::size_t matched = 0;
+  for (const char c : bytes) {
+    if (c == '\0') continue;
+    matched = std::tolower(static_cast<unsigned char>(c)) == kTag[matched] ? matched + 1 : (c == '<' ? 1 : 0);
+    if (matched == sizeof kTag - 1) return true;
+  }
+  return false;
+}
+
+void refuseZippedCollada(const std::string& path, std::string_view bytes) {
+  // A zip's local file headers hold the member names uncompressed.
+  const bool zip = bytes.substr(0, 4) == std::string_view("PK\3\4", 4);
+  std::string lower(bytes.size(), '\0');
+  if (zip) std::transform(bytes.begin(), bytes.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lowerCaseExtension(path) == ".zae" ||
+      (zip && (lower.find("manifest.xml") != std::string::npos || lower.find(".dae") != std::string::npos))) {
+    throw InputError(path + ": zipped COLLADA (.zae) is not read: its index lists cannot be checked before assimp "
+                            "reads them (unzip it and load the .dae)");
+  }
+}
+
 void requireIntegerIndexLists(const std::string& path, std::string_view text) {
+  if (text.find('\0') != std::string_view::npos) {
+    std::string narrowed;
+    std::copy_if(text.begin(), text.end(), std::back_inserter(narrowed), [](char c) { return c != '\0'; });
+    requireIntegerIndexLists(path, narrowed);
+    return;
+  }
   std::size_t at = 0;
   while ((at = text.find('<', at)) != std::string_view::npos) {
     if (text.compare(at, 4, "<!--") == 0) {  // a comment may mention <p> freely

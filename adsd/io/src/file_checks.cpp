@@ -116,6 +116,32 @@ void requireCompleteBinaryStl(const std::string& path, std::string_view head, st
   }
 }
 
+std::string lowerCaseExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+MeshReader chooseReader(const std::string& path, std::string_view bytes) {
+  const std::string ext = lowerCaseExtension(path);
+  if (ext == ".obj") return MeshReader::obj;
+  if (ext == ".off") return MeshReader::off;
+  if (ext == ".ply") return MeshReader::ply;
+  if (ext == ".stl") return MeshReader::stl;
+  const auto startsWithCaseless = [&](std::string_view word) {
+    if (bytes.size() < word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i) {
+      if (std::tolower(static_cast<unsigned char>(bytes[i])) != word[i]) return false;
+    }
+    return true;
+  };
+  if (startsWithCaseless("ply")) return MeshReader::ply;
+  if (startsWithOffKeyword(bytes)) return MeshReader::off;
+  if (startsWithSolid(bytes.substr(0, kStlSniffBytes))) return MeshReader::stl;
+  return MeshReader::assimp;
+}
+
 std::string readWholeFile(const std::string& path) {
   return readFile(path, requireReadableFile(path));
 }

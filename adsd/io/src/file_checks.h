@@ -29,9 +29,37 @@ bool isBinaryStl(std::string_view head);
 /// header promises (a cut-off download or copy is the usual cause, and the message says so).
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes);
 
+/// \brief The extension of \p path in lower case, with its dot (".obj"); empty if it has none.
+std::string lowerCaseExtension(const std::string& path);
+
+/// \brief The reader a mesh file goes to: one of ours, or assimp.
+enum class MeshReader { obj, off, ply, stl, assimp };
+
+/// \brief The reader for \p path, whose content is \p bytes. The extension decides for .obj, .off,
+/// .ply and .stl (any case). Any other file goes by its first bytes where they are a signature:
+/// "ply" (any case: all assimp's PLY reader asks of a file), an OFF keyword, "solid" (ASCII STL).
+/// Only what has none of these goes to assimp: above all no PLY, which assimp's reader can
+/// crash, hang or abort on (the fuzz findings in ply_reader.cpp) whatever the file is called.
+MeshReader chooseReader(const std::string& path, std::string_view bytes);
+
+/// \brief Whether the first word of \p text, past blank and comment lines, is an OFF keyword
+/// (OFF, COFF, NOFF, STOFF, 4OFF, ...). In off_reader.cpp.
+bool startsWithOffKeyword(std::string_view text);
+
+/// \brief Whether assimp could read \p path as COLLADA: it is named .dae, or its text holds
+/// "<collada" in any case (with NUL bytes dropped, so UTF-16 text counts), which is what assimp
+/// looks for in a file of any other name.
+bool readAsCollada(const std::string& path, std::string_view bytes);
+
+/// \brief Throws InputError naming \p path for a zipped COLLADA archive (.zae, or a zip holding a
+/// manifest.xml or a .dae): assimp would unzip and read the .dae inside, which
+/// requireIntegerIndexLists cannot check first.
+void refuseZippedCollada(const std::string& path, std::string_view bytes);
+
 /// \brief COLLADA: every `<p>` index list holds integers and whitespace only, up to its `</p>`;
 /// throws InputError "PATH:LINE: ..." otherwise (assimp would read such a list forever, growing
-/// it until memory runs out; see collada_check.cpp).
+/// it until memory runs out; see collada_check.cpp). UTF-16 text is checked with its NUL bytes
+/// dropped, which leaves the ASCII that matters here and every line where it was.
 void requireIntegerIndexLists(const std::string& path, std::string_view text);
 
 /// \brief The readers: exact into double, InputError "PATH:LINE: ..." on anything malformed.

@@ -1,10 +1,8 @@
 #include "adsd/io/load_mesh.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <limits>
 #include <new>
 #include <sstream>
@@ -17,6 +15,7 @@
 
 #include "adsd/error.h"
 #include "file_checks.h"
+#include "polygon_soup.h"
 
 namespace adsd::io {
 
@@ -266,27 +265,41 @@ std::uint64_t countSurfaceFaces(const aiScene& scene, std::uint64_t& lines, std:
   throw InputError(what);
 }
 
-std::string lowerCaseExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
+/// Some of assimp's readers (ASE, CSM) answer a file they cannot make sense of with a placeholder
+/// instead of an error: "hello world" saved as .ase came back as 8 triangles on one point. No file
+/// that describes a surface gives that, so it is refused; our own readers, which invent nothing,
+/// accept a file that is a single point.
+void requireMoreThanOnePoint(const Gathered& gathered, const std::string& path) {
+  const Vec3& first = gathered.vertices[gathered.triangles.front()[0]];
+  for (const TriangleIndices& t : gathered.triangles) {
+    for (const std::uint32_t v : t) {
+      if (gathered.vertices[v] != first) return;
+    }
+  }
+  std::ostringstream where;
+  where << '(' << first.x() << ", " << first.y() << ", " << first.z() << ')';
+  throw InputError(path + ": assimp made nothing of the file but " + std::to_string(gathered.triangles.size()) +
+                   " triangles on the single point " + where.str() + ", not a surface (is it a mesh file?)");
 }
 
 Mesh loadMeshUnguarded(const std::string& path) {
-  detail::requireReadableFile(path);
-  // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
-  // docs/numerics.md for the measurement); everything else goes through assimp, in float.
-  const std::string ext = lowerCaseExtension(path);
-  if (ext == ".obj") return detail::meshFromSoup(detail::readObj(path, detail::readWholeFile(path)), path);
-  if (ext == ".off") return detail::meshFromSoup(detail::readOff(path, detail::readWholeFile(path)), path);
-  if (ext == ".stl") {
+  {
     const std::string bytes = detail::readWholeFile(path);
-    detail::requireCompleteBinaryStl(path, bytes, bytes.size());
-    return detail::meshFromSoup(detail::readStl(path, bytes), path);
-  }
-  if (ext == ".ply") return detail::meshFromSoup(detail::readPly(path, detail::readWholeFile(path)), path);
-  if (ext == ".dae") detail::requireIntegerIndexLists(path, detail::readWholeFile(path));
+    // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
+    // docs/numerics.md for the measurement); everything else goes through assimp, in float.
+    switch (detail::chooseReader(path, bytes)) {
+      case detail::MeshReader::obj: return detail::meshFromSoup(detail::readObj(path, bytes), path);
+      case detail::MeshReader::off: return detail::meshFromSoup(detail::readOff(path, bytes), path);
+      case detail::MeshReader::ply: return detail::meshFromSoup(detail::readPly(path, bytes), path);
+      case detail::MeshReader::stl:
+        detail::requireCompleteBinaryStl(path, bytes, bytes.size());
+        return detail::meshFromSoup(detail::readStl(path, bytes), path);
+      case detail::MeshReader::assimp: break;
+    }
+    // Assimp reads COLLADA by content whatever the file's name, so the check goes by content too.
+    detail::refuseZippedCollada(path, bytes);
+    if (detail::readAsCollada(path, bytes)) detail::requireIntegerIndexLists(path, bytes);
+  }  // the bytes are freed before assimp reads the file itself (it may need files beside it)
 
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, 0);
@@ -313,6 +326,8 @@ Mesh loadMeshUnguarded(const std::string& path) {
 
   Gathered gathered = gatherScene(*scene, path);
   if (gathered.triangles.empty()) throwNoTriangles(path, gathered.lines, gathered.points);
+  requireMoreThanOnePoint(gathered, path);
+  detail::dropRepeatedTriangles(gathered.triangles, gathered.vertices.size());
   return Mesh(std::move(gathered.vertices), std::move(gathered.triangles), path);
 }
 

@@ -106,7 +106,9 @@ class ObjReader {
                          " does not start with a vertex index (from 1, or negative counting back)");
       }
       if (index < 0) {
-        if (-index > defined) {
+        // Compared as index < -defined: negating index itself overflows for the most negative
+        // long long, which a file may well hold.
+        if (index < -defined) {
           throw InputError(at() + "face corner " + quoteToken(tokens[k]) + " counts back past the first vertex (" +
                            std::to_string(defined) + " defined so far)");
         }

@@ -11,9 +11,11 @@
 // faces, edges), then one vertex per line and one face per line ("n i1 ... in", extra values
 // after the indices ignored). '#' starts a comment anywhere; blank and comment lines are skipped.
 // Refused, with the line: homogeneous (4OFF) and n-dimensional (nOFF) variants and binary OFF,
-// fewer lines than the counts promise, a vertex without three numbers, a non-finite coordinate or
-// one beyond +-1e75 (tolerances.h), a face without its indices, an index out of range.
+// fewer lines than the counts promise or data after the last face, a vertex without three
+// numbers, a non-finite coordinate or one beyond +-1e75 (tolerances.h), a face without its
+// indices, an index out of range.
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -31,6 +33,13 @@ namespace adsd::io::detail {
 namespace {
 
 constexpr long long kMaxCount = UINT32_MAX;
+
+// The shortest lines the data can have: a vertex "0 0 0" and a face "1 0", each with its line end.
+// Reservations are capped by how many such lines the rest of the file could hold, so that a header
+// promising 2^32 - 2 vertices in a 40-byte file is reported as the truncation it is (when the
+// reading reaches the end) instead of reserving 100 GB first.
+constexpr std::size_t kShortestVertexLineBytes = 6;
+constexpr std::size_t kShortestFaceLineBytes = 4;
 
 std::string_view withoutComment(std::string_view line) {
   const std::size_t hash = line.find('#');
@@ -60,7 +69,7 @@ std::string shortest(double x) {
 
 class OffReader {
  public:
-  OffReader(const std::string& path, std::string_view text) : path_(path), lines_(text) {}
+  OffReader(const std::string& path, std::string_view text) : path_(path), text_(text), lines_(text) {}
 
   PolygonSoup run() {
     std::vector<long long> counts;
@@ -71,9 +80,9 @@ class OffReader {
     if (faces == 0) throw InputError(path_ + ": the file holds no triangles (the OFF header promises 0 faces)");
 
     PolygonSoup soup;
-    soup.points.reserve(static_cast<std::size_t>(vertices));
+    soup.points.reserve(std::min(static_cast<std::size_t>(vertices), linesThatFit(kShortestVertexLineBytes)));
     for (long long v = 0; v < vertices; ++v) {
-      const std::vector<std::string_view> tokens = nextDataLine("vertex", v, vertices);
+      const std::vector<std::string_view> tokens = nextDataLine("vertex", "vertices", v, vertices);
       Vec3 p;
       if (tokens.size() < 3 || !parseDouble(tokens[0], p.x()) || !parseDouble(tokens[1], p.y()) ||
           !parseDouble(tokens[2], p.z())) {
@@ -83,10 +92,11 @@ class OffReader {
       requireRepresentable(p, v);
       soup.points.push_back(p);
     }
-    soup.corners.reserve(static_cast<std::size_t>(3 * faces));
-    soup.starts.reserve(static_cast<std::size_t>(faces + 1));
+    const std::size_t facesThatFit = std::min(static_cast<std::size_t>(faces), linesThatFit(kShortestFaceLineBytes));
+    soup.corners.reserve(3 * facesThatFit);
+    soup.starts.reserve(facesThatFit + 1);
     for (long long f = 0; f < faces; ++f) {
-      const std::vector<std::string_view> tokens = nextDataLine("face", f, faces);
+      const std::vector<std::string_view> tokens = nextDataLine("face", "faces", f, faces);
       long long corners = 0;
       if (!parseInteger(tokens[0], corners) || corners < 1) {
         throw InputError(at() + "face " + std::to_string(f) + ": expected a corner count of at least 1, got " +
@@ -110,11 +120,18 @@ class OffReader {
       }
       soup.closePolygon();
     }
+    requireNothingAfterTheFaces(faces);
     return soup;
   }
 
  private:
   std::string at() const { return path_ + ":" + std::to_string(lines_.lineNumber()) + ": "; }
+
+  /// How many lines of at least \p bytesEach bytes (line end included; the last may lack it) the
+  /// rest of the file could hold.
+  std::size_t linesThatFit(std::size_t bytesEach) const {
+    return (text_.size() - lines_.offset() + 1) / bytesEach;
+  }
 
   void requireRepresentable(const Vec3& p, long long v) const {
     for (int axis = 0; axis < 3; ++axis) {
@@ -163,12 +180,24 @@ class OffReader {
     }
   }
 
+  /// Only blank lines and comments may follow the last face: anything else means the counts do
+  /// not describe the file (a face count too low, two files joined), and reading on would guess.
+  void requireNothingAfterTheFaces(long long faces) {
+    std::string_view line;
+    while (lines_.next(line)) {
+      const std::vector<std::string_view> tokens = splitWhitespace(withoutComment(line));
+      if (tokens.empty()) continue;
+      throw InputError(at() + "unexpected " + quoteToken(tokens[0]) + " after the last of the " +
+                       std::to_string(faces) + " faces the OFF header promises");
+    }
+  }
+
   /// The next line with data: blank lines and comments are skipped.
-  std::vector<std::string_view> nextDataLine(const char* what, long long index, long long promised) {
+  std::vector<std::string_view> nextDataLine(const char* one, const char* many, long long index, long long promised) {
     while (true) {
       if (!lines_.next(current_)) {
-        throw InputError(path_ + ": the OFF header promises " + std::to_string(promised) + " " + what +
-                         (promised == 1 ? "" : "s") + " but the file ends after " + std::to_string(index));
+        throw InputError(path_ + ": the OFF header promises " + std::to_string(promised) + " " +
+                         (promised == 1 ? one : many) + " but the file ends after " + std::to_string(index));
       }
       std::vector<std::string_view> tokens = splitWhitespace(withoutComment(current_));
       if (!tokens.empty()) return tokens;
@@ -176,11 +205,24 @@ class OffReader {
   }
 
   const std::string& path_;
+  std::string_view text_;
   LineScanner lines_;
   std::string_view current_;
 };
 
 }  // namespace
+
+bool startsWithOffKeyword(std::string_view text) {
+  LineScanner lines(text);
+  std::string_view line;
+  while (lines.next(line)) {
+    const std::vector<std::string_view> tokens = splitWhitespace(withoutComment(line));
+    if (tokens.empty()) continue;
+    bool plain = true;
+    return isOffKeyword(tokens[0], plain);
+  }
+  return false;
+}
 
 PolygonSoup readOff(const std::string& path, std::string_view text) { return OffReader(path, text).run(); }
 

@@ -214,9 +214,25 @@ class PlyChecker {
           throw InputError(path_ + ": the PLY vertex element has no property " + "xyz"[axis]);
         }
       }
-      soup_.points.reserve(static_cast<std::size_t>(e.count));
+      // Reserved for no more vertices than the data can hold: a header promising 2^32 - 2 of them
+      // in a 200-byte file is a truncation to report when the walk reaches the end, not 100 GB to
+      // allocate first.
+      const std::uint64_t dataBytes = bytes_.size() - dataOffset_ + 1;  // +1: ASCII's last line end may be missing
+      const std::uint64_t fits = dataBytes / fewestBytesPerInstance(e);
+      soup_.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(static_cast<std::uint64_t>(e.count), fits)));
     }
     return axisOf;
+  }
+
+  /// The fewest bytes one instance of \p e takes in the data (at least 1 when it has properties):
+  /// binary, its scalars and list counts (a list may be empty); ASCII, one digit per value and one
+  /// space or line end after it.
+  std::uint64_t fewestBytesPerInstance(const Element& e) const {
+    std::uint64_t bytes = 0;
+    for (const Property& p : e.properties) {
+      bytes += format_ == Format::ascii ? 2 : static_cast<std::uint64_t>(p.isList ? p.countType.bytes : p.valueType.bytes);
+    }
+    return bytes;
   }
 
   /// A coordinate must be finite and within +-1e75 (tolerances.h); \p text shows it in the message.
@@ -346,6 +362,9 @@ class PlyChecker {
     for (const Element& e : elements_) {
       const bool isVertex = e.name == "vertex";
       const std::array<int, 3> axisOf = coordinateProperties(e);
+      // Instances without properties take no bytes: there is nothing to walk, and walking 2^32 - 1
+      // of them one by one, element after element, took minutes.
+      if (e.properties.empty()) continue;
       for (long long i = 0; i < e.count; ++i) {
         Vec3 point = Vec3::Zero();
         for (std::size_t q = 0; q < e.properties.size(); ++q) {

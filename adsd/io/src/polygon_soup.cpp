@@ -2,7 +2,9 @@
 
 #include <charconv>
 #include <cstring>
+#include <algorithm>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "adsd/error.h"
@@ -35,6 +37,28 @@ PointBits bitsOf(const Vec3& p) {
   return b;
 }
 
+/// A triangle's vertex indices in increasing order: the same three vertices in any order give the
+/// same key.
+struct SortedCorners {
+  std::uint32_t low, middle, high;
+  bool operator==(const SortedCorners& o) const { return low == o.low && middle == o.middle && high == o.high; }
+};
+struct SortedCornersHash {
+  std::size_t operator()(const SortedCorners& t) const {
+    std::uint64_t h = (static_cast<std::uint64_t>(t.low) << 32 | t.middle) * 0x9E3779B97F4A7C15ull;
+    h ^= (t.high + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2)) * 0xBF58476D1CE4E5B9ull;
+    return static_cast<std::size_t>(h ^ (h >> 31));
+  }
+};
+
+SortedCorners sortedCorners(const TriangleIndices& t) {
+  std::uint32_t a = t[0], b = t[1], c = t[2];
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  return {a, b, c};
+}
+
 std::string shortest(double x) {
   char text[32];
   return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
@@ -56,6 +80,28 @@ void requireRepresentablePoints(const PolygonSoup& soup, const std::string& path
                        "would overflow");
     }
   }
+}
+
+void dropRepeatedTriangles(std::vector<TriangleIndices>& triangles, std::size_t vertexCount) {
+  std::unordered_set<SortedCorners, SortedCornersHash> seen;
+  seen.reserve(triangles.size());
+  std::vector<bool> cornerOfProperTriangle(vertexCount, false);
+  std::size_t kept = 0;
+  for (const TriangleIndices& t : triangles) {
+    if (!seen.insert(sortedCorners(t)).second) continue;
+    triangles[kept++] = t;
+    if (t[0] != t[1] || t[1] != t[2]) {
+      for (const std::uint32_t v : t) cornerOfProperTriangle[v] = true;
+    }
+  }
+  triangles.resize(kept);
+  // A triangle on a single vertex adds no point when that vertex is a corner of another triangle.
+  // One at a vertex of its own is a point of the surface, kept (a lone point is a valid mesh).
+  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
+                                 [&](const TriangleIndices& t) {
+                                   return t[0] == t[1] && t[1] == t[2] && cornerOfProperTriangle[t[0]];
+                                 }),
+                  triangles.end());
 }
 
 Mesh meshFromSoup(PolygonSoup soup, const std::string& path) {
@@ -103,6 +149,10 @@ Mesh meshFromSoup(PolygonSoup soup, const std::string& path) {
     }
     throw InputError(what);
   }
+  // Repeats cost the distance queries (100,000 copies of one triangle: every tree query visits
+  // each copy) and change no distance. No vertex is left unused: a dropped repeat's are its
+  // original's, a dropped single-vertex triangle's belongs to another triangle.
+  dropRepeatedTriangles(triangles, vertices.size());
   soup = PolygonSoup();  // the file's copy is no longer needed before the Mesh takes its own
   return Mesh(std::move(vertices), std::move(triangles), path);
 }

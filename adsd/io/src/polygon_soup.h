@@ -31,8 +31,14 @@ void requireRepresentablePoints(const PolygonSoup& soup, const std::string& path
 /// (fanned from their first corner: exact for the convex polygons exporters write), polygons of
 /// one or two corners (points, lines) are dropped, points used by no triangle are dropped, and
 /// points with bit-identical coordinates are shared, so that counts match what assimp made of the
-/// same files. No coordinate is changed. Throws InputError naming \p path when no triangle is
-/// left or a corner refers to no point.
+/// same files. Then dropRepeatedTriangles. No coordinate is changed. Throws InputError naming
+/// \p path when no triangle is left or a corner refers to no point.
 Mesh meshFromSoup(PolygonSoup soup, const std::string& path);
+
+/// \brief Removes from \p triangles (indices below \p vertexCount) those that add no point to the
+/// surface: a repeat of an earlier triangle's three vertices in any order, and a triangle whose
+/// three corners are one vertex that is a corner of another triangle. The first of each kind
+/// stays, in file order. Every vertex used before is still used after.
+void dropRepeatedTriangles(std::vector<TriangleIndices>& triangles, std::size_t vertexCount);
 
 }  // namespace adsd::io::detail

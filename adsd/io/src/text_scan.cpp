@@ -48,9 +48,15 @@ bool parseWhole(std::string_view token, Number& value) {
 
 }  // namespace
 
+LineScanner::LineScanner(std::string_view text) : text_(text) {
+  // Only a buffer without any '\n' is taken for CR-only text: a stray CR in LF or CR LF text stays
+  // inside its line (where whitespace splitting drops it), as before.
+  if (text_.find('\n') == std::string_view::npos && text_.find('\r') != std::string_view::npos) lineEnd_ = '\r';
+}
+
 bool LineScanner::next(std::string_view& line) {
   if (offset_ >= text_.size()) return false;
-  const std::size_t newline = text_.find('\n', offset_);
+  const std::size_t newline = text_.find(lineEnd_, offset_);
   const std::size_t end = newline == std::string_view::npos ? text_.size() : newline;
   line = text_.substr(offset_, end - offset_);
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);

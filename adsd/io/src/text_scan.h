@@ -10,11 +10,12 @@
 
 namespace adsd::io::detail {
 
-/// \brief Walks a buffer line by line ('\n' ends a line; a '\r' before it is dropped), counting
-/// lines from 1 and remembering where the next line starts (binary PLY data follows its header).
+/// \brief Walks a buffer line by line ('\n' ends a line; a '\r' before it is dropped; in a buffer
+/// with no '\n' at all, '\r' ends a line, as in classic Mac OS text), counting lines from 1 and
+/// remembering where the next line starts (binary PLY data follows its header).
 class LineScanner {
  public:
-  explicit LineScanner(std::string_view text) : text_(text) {}
+  explicit LineScanner(std::string_view text);
 
   /// \brief The next line without its terminator; false at the end of the buffer.
   bool next(std::string_view& line);
@@ -25,6 +26,7 @@ class LineScanner {
 
  private:
   std::string_view text_;
+  char lineEnd_ = '\n';
   std::size_t offset_ = 0;
   int lineNumber_ = 0;
 };
