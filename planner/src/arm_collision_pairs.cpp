@@ -5,6 +5,8 @@
 #include <tinyxml.h>
 
 #include "adsd/error.h"
+#include "input_file.h"
+#include "xml_nesting.h"
 
 namespace adsd::planner {
 
@@ -65,9 +67,11 @@ std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmMode
 }
 
 void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, ArmCollisionPairs& pairs) {
+  const std::string text = readInputFile(srdfPath, "SRDF file");
+  xml::refuseDeepNesting(srdfPath, text);  // before TinyXML's recursive parser
   TiXmlDocument doc;
-  if (!doc.LoadFile(srdfPath.c_str())) {
-    if (doc.ErrorId() == TiXmlBase::TIXML_ERROR_OPENING_FILE) throw InputError(srdfPath + ": cannot open the SRDF file");
+  doc.Parse(text.c_str());
+  if (doc.Error()) {
     throw InputError(srdfPath + ":" + std::to_string(doc.ErrorRow()) + ": not XML: " + doc.ErrorDesc());
   }
   const TiXmlElement* robot = doc.FirstChildElement("robot");

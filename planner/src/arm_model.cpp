@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
@@ -15,6 +13,8 @@
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
 #include "adsd/planner/primitive_meshes.h"
+#include "input_file.h"
+#include "xml_nesting.h"
 
 namespace adsd::planner {
 
@@ -42,15 +42,6 @@ void ArmModel::buildHierarchies() {
 
 namespace {
 
-std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the URDF file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) throw InputError(path + ": cannot read the URDF file");
-  return text.str();
-}
-
 /// What urdfdom does not say clearly (it logs a line and returns null), checked on the XML first
 /// so that the error names the joint or link: joint types, the tree's shape, and the file order
 /// of the joints (urdfdom keeps joints in a map by name, which loses it).
@@ -59,6 +50,7 @@ struct JointOrder {
 };
 
 JointOrder checkTreeShape(const std::string& path, const std::string& text) {
+  xml::refuseDeepNesting(path, text);  // before any recursive parser, ours or urdfdom's
   TiXmlDocument doc;
   doc.Parse(text.c_str());
   if (doc.Error()) {
@@ -261,7 +253,7 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
 }  // namespace
 
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath) {
-  const std::string text = readWholeFile(urdfPath);
+  const std::string text = readInputFile(urdfPath, "URDF file");
   const JointOrder order = checkTreeShape(urdfPath, text);
   const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(text);
   if (!urdf || !urdf->getRoot()) throw InputError(urdfPath + ": urdfdom cannot read this URDF (its message is above)");

@@ -1,6 +1,7 @@
 #include "adsd/planner/motion_plan_request_yaml.h"
 
 #include "adsd/error.h"
+#include "input_file.h"
 #include "yaml_input.h"
 
 // The format, as relied on here: moveit_msgs/MotionPlanRequest (workspace_parameters, start_state
@@ -77,7 +78,7 @@ MotionPlanRequestYaml parseMotionPlanRequestYaml(const std::string& text, const 
 }
 
 MotionPlanRequestYaml readMotionPlanRequestYaml(const std::string& path) {
-  return parseMotionPlanRequestYaml(yaml::readWholeFile(path, "request file"), path);
+  return parseMotionPlanRequestYaml(readInputFile(path, "request file"), path);
 }
 
 }  // namespace adsd::planner

@@ -4,9 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <locale.h>  // newlocale, strtod_l (POSIX): numbers read in the C locale
 #include <stdlib.h>
@@ -223,19 +220,6 @@ JointValues jointState(const Document& doc, const Field& state) {
     out.lines[joint] = position.line;
   }
   return out;
-}
-
-std::string readWholeFile(const std::string& path, const std::string& what) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": " + what + " does not exist");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a " + what);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the " + what);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the " + what);
-  return buffer.str();
 }
 
 }  // namespace adsd::planner::yaml

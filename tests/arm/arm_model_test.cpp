@@ -247,6 +247,42 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
   EXPECT_THROW(readUrdf(dir.path("absent.urdf")), InputError);
 }
 
+// TinyXML parses an element by a recursive call: a deep enough file overflowed the stack (SIGSEGV,
+// adversarial sweep). Refused first, naming the file; markup inside comments, CDATA and attribute
+// values, and self-closing elements, do not count as nesting.
+TEST(ArmModel, XmlNestedTooDeeplyIsRefusedBeforeParsing) {
+  test::ScratchDir dir;
+  std::string deep;
+  for (int i = 0; i < 200000; ++i) deep += "<z>";
+  for (int i = 0; i < 200000; ++i) deep += "</z>";
+  const std::string urdf = dir.write("deep.urdf", "<robot name=\"x\">\n<link name=\"a\"/>" + deep + "</robot>");
+  try {
+    readUrdf(urdf);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(urdf + ":2: elements nested more than 500 deep", 0), 0u) << e.what();
+  }
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  ArmCollisionPairs pairs(m);
+  const std::string srdf = dir.write("deep.srdf", "<robot name=\"slider_arm\">" + deep + "</robot>");
+  try {
+    disablePairsFromSrdf(m, srdf, pairs);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(srdf + ":1: elements nested more than 500 deep", 0), 0u) << e.what();
+  }
+
+  std::string notNesting = "<!-- ";
+  for (int i = 0; i < 600; ++i) notNesting += "<z>";
+  notNesting += " --><![CDATA[";
+  for (int i = 0; i < 600; ++i) notNesting += "<z>";
+  notNesting += "]]>";
+  for (int i = 0; i < 600; ++i) notNesting += "<z a=\"/><y>\"/>";
+  const ArmModel shallow = readUrdf(dir.write("shallow.urdf", "<?xml version=\"1.0\"?><robot name=\"x\">" + notNesting +
+                                                                 "<link name=\"a\"/></robot>"));
+  EXPECT_EQ(shallow.links.size(), 1u);
+}
+
 TEST(ArmModel, MeshScaleAndFileUrisAndPackageSearchPath) {
   test::ScratchDir dir;
   std::filesystem::create_directories(dir.root() / "share" / "pkg" / "meshes");
