@@ -6,12 +6,14 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
+#include "adsd/tolerances.h"
 #include "adsd/planner/primitive_meshes.h"
 #include "input_file.h"
 #include "xml_nesting.h"
@@ -42,14 +44,17 @@ void ArmModel::buildHierarchies() {
 
 namespace {
 
-/// What urdfdom does not say clearly (it logs a line and returns null), checked on the XML first
-/// so that the error names the joint or link: joint types, the tree's shape, and the file order
-/// of the joints (urdfdom keeps joints in a map by name, which loses it).
-struct JointOrder {
-  std::map<std::string, int> rank;  ///< joint name -> position in the file
+/// What urdfdom does not say clearly (it logs a line and returns null, or drops an element),
+/// checked on the XML first so that the error names the joint or link: joint types, the tree's
+/// shape; and what urdfdom loses: the file order of the joints (it keeps them in a map by name)
+/// and the lines of the links and their <collision> elements.
+struct UrdfOutline {
+  std::map<std::string, int> rank;                         ///< joint name -> position in the file
+  std::map<std::string, int> linkLine;                     ///< link name -> line of its <link>
+  std::map<std::string, std::vector<int>> collisionLines;  ///< link name -> line of each <collision>
 };
 
-JointOrder checkTreeShape(const std::string& path, const std::string& text) {
+UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
   xml::refuseDeepNesting(path, text);  // before any recursive parser, ours or urdfdom's
   TiXmlDocument doc;
   doc.Parse(text.c_str());
@@ -58,12 +63,17 @@ JointOrder checkTreeShape(const std::string& path, const std::string& text) {
   }
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(path + ": no <robot> element: not a URDF file");
-  JointOrder order;
+  UrdfOutline order;
   std::set<std::string> linkNames;
   for (const TiXmlElement* l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link")) {
     const char* name = l->Attribute("name");
     if (!name) throw InputError(path + ":" + std::to_string(l->Row()) + ": a <link> without a name");
     linkNames.insert(name);
+    order.linkLine[name] = l->Row();
+    std::vector<int>& lines = order.collisionLines[name];
+    for (const TiXmlElement* c = l->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision")) {
+      lines.push_back(c->Row());
+    }
   }
   std::map<std::string, std::string> parentJointOf;  // child link -> joint
   int rank = 0;
@@ -135,6 +145,13 @@ Pose toPose(const urdf::Pose& p) {
   return pose;
 }
 
+/// A vector as "(x, y, z)" for a message, 6 significant digits.
+std::string describe(const Vec3& v) {
+  std::ostringstream out;
+  out << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return out.str();
+}
+
 /// Resolves a mesh file name (see readUrdf()); throws naming the link when nothing is found.
 std::string resolveMeshPath(const std::string& uri, const fs::path& urdfDir, const std::vector<std::string>& search,
                             const std::string& where) {
@@ -197,23 +214,52 @@ Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::v
 }
 
 /// Every <collision> element of a link, placed by its origin, in one mesh (link frame).
+///
+/// urdfdom drops a <collision> element it cannot read (a "nan", a scale of two numbers, an empty
+/// <geometry>) after logging a line, and reads the rest: the link would silently go unchecked
+/// for collisions. So every element of the XML must have come through.
 std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& urdfDir,
-                                      const std::vector<std::string>& search, const std::string& path) {
+                                      const std::vector<std::string>& search, const std::string& path,
+                                      const UrdfOutline& outline) {
   std::vector<urdf::CollisionSharedPtr> elements = link.collision_array;
   if (elements.empty() && link.collision) elements.push_back(link.collision);
+  const std::vector<int>& lines = outline.collisionLines.at(link.name);
+  const std::string linkWhere = path + ":" + std::to_string(outline.linkLine.at(link.name)) + ": link '" + link.name + "'";
+  if (elements.size() != lines.size()) {
+    throw InputError(linkWhere + ": urdfdom read " + std::to_string(elements.size()) + " of its " +
+                     std::to_string(lines.size()) + " <collision> elements (its message is above); refused " +
+                     "rather than leave the link unchecked");
+  }
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
-  for (const urdf::CollisionSharedPtr& c : elements) {
-    if (!c || !c->geometry) continue;
-    const std::string where = path + ": link '" + link.name + "'";
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    const urdf::CollisionSharedPtr& c = elements[k];
+    const std::string where = path + ":" + std::to_string(lines[k]) + ": link '" + link.name + "'";
+    if (!c || !c->geometry) throw InputError(where + ": a <collision> element without geometry");
+    const Vec3 offset(c->origin.position.x, c->origin.position.y, c->origin.position.z);
+    if (!offset.allFinite() || offset.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+      throw InputError(where + ": <collision> <origin xyz> must be finite and within 1e75, got " + describe(offset));
+    }
     const Mesh part = geometryMesh(*c->geometry, urdfDir, search, where);
     const Pose origin = toPose(c->origin);
-    const auto offset = static_cast<std::uint32_t>(vertices.size());
-    for (const Vec3& p : part.vertices()) vertices.push_back(origin * p);
-    for (const TriangleIndices& t : part.triangles()) triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    const auto first = static_cast<std::uint32_t>(vertices.size());
+    for (const Vec3& p : part.vertices()) {
+      const Vec3 placed = origin * p;
+      // Each summand is within 1e75, but their sum may not be; Mesh would then name only the link.
+      if (placed.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+        throw InputError(where + ": placed by its <origin>, the collision geometry reaches " + describe(placed) +
+                         ", beyond 1e75");
+      }
+      vertices.push_back(placed);
+    }
+    for (const TriangleIndices& t : part.triangles()) triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
   }
   if (triangles.empty()) return std::nullopt;
-  return Mesh(std::move(vertices), std::move(triangles), link.name);
+  try {
+    return Mesh(std::move(vertices), std::move(triangles), link.name);
+  } catch (const InputError& e) {
+    throw InputError(linkWhere + ": its collision geometry: " + e.what());
+  }
 }
 
 ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t childLink, const std::string& urdfPath) {
@@ -254,7 +300,7 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
 
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath) {
   const std::string text = readInputFile(urdfPath, "URDF file");
-  const JointOrder order = checkTreeShape(urdfPath, text);
+  const UrdfOutline outline = checkTreeShape(urdfPath, text);
   const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(text);
   if (!urdf || !urdf->getRoot()) throw InputError(urdfPath + ": urdfdom cannot read this URDF (its message is above)");
   const fs::path urdfDir = fs::absolute(fs::path(urdfPath)).parent_path();
@@ -283,12 +329,12 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
         model.joints.back().active = static_cast<int>(model.activeJoints.size() - 1);
       }
     }
-    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath);
+    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath, outline);
     model.links.push_back(std::move(link));
 
     std::vector<urdf::JointSharedPtr> childJoints = visit.link->child_joints;
     std::sort(childJoints.begin(), childJoints.end(), [&](const urdf::JointSharedPtr& a, const urdf::JointSharedPtr& b) {
-      return order.rank.at(a->name) < order.rank.at(b->name);
+      return outline.rank.at(a->name) < outline.rank.at(b->name);
     });
     // Pushed in reverse, so that the first child in the file is visited first.
     for (auto it = childJoints.rbegin(); it != childJoints.rend(); ++it) {

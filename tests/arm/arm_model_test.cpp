@@ -247,6 +247,65 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
   EXPECT_THROW(readUrdf(dir.path("absent.urdf")), InputError);
 }
 
+// urdfdom logs and drops a <collision> element it cannot read, and reads on: the link went
+// unchecked for collisions with exit 0 (adversarial sweep). Each is refused, naming the link's line.
+TEST(ArmModel, CollisionElementsUrdfdomCannotReadAreRefused) {
+  test::ScratchDir dir;
+  const auto robot = [](const std::string& collision) {
+    return "<robot name=\"r\">\n<link name=\"a\">\n"
+           "<collision><geometry><box size=\"1 1 1\"/></geometry></collision>\n" +
+           collision + "\n</link>\n</robot>\n";
+  };
+  const std::vector<std::string> unreadable = {
+      R"(<collision><origin xyz="nan 0 0"/><geometry><box size="1 1 1"/></geometry></collision>)",
+      R"(<collision><origin rpy="0 nan 0"/><geometry><box size="1 1 1"/></geometry></collision>)",
+      R"(<collision><geometry><box size="nan 1 1"/></geometry></collision>)",
+      R"(<collision><geometry><mesh filename="m.stl" scale="nan 1 1"/></geometry></collision>)",
+      R"(<collision><geometry><mesh filename="m.stl" scale="1 1"/></geometry></collision>)",
+      R"(<collision><geometry/></collision>)",
+  };
+  for (const std::string& collision : unreadable) {
+    const std::string path = dir.write("dropped.urdf", robot(collision));
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << collision << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ":2: link 'a': urdfdom read 1 of its 2 <collision> elements (its message "
+                                              "is above); refused rather than leave the link unchecked")
+          << collision;
+    }
+  }
+}
+
+// Collision geometry placed out of range: named by the URDF, the <collision> element's line and the
+// field (was: the link alone, by Mesh: "l2: vertex 0 has coordinate x = 1e+200").
+TEST(ArmModel, CollisionOriginOutOfRangeIsRefusedNamingTheField) {
+  test::ScratchDir dir;
+  dir.write("t.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                     "endloop\nendfacet\nendsolid t\n");
+  const auto robot = [](const std::string& inside) {
+    return "<robot name=\"r\">\n<link name=\"a\">\n<collision>" + inside + "</collision>\n</link>\n</robot>\n";
+  };
+  struct Case {
+    std::string collision, mustSay;
+  };
+  const std::vector<Case> cases = {
+      {R"(<origin xyz="1e200 0 0"/><geometry><box size="1 1 1"/></geometry>)", "<collision> <origin xyz> must be finite and within 1e75"},
+      {R"(<origin xyz="1e75 0 0"/><geometry><box size="1e70 1 1"/></geometry>)", "the collision geometry reaches"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = dir.write("out_of_range.urdf", robot(c.collision));
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << c.collision << ": no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(path + ":3: link 'a': ", 0), 0u) << what;
+      EXPECT_NE(what.find(c.mustSay), std::string::npos) << what;
+    }
+  }
+}
+
 // TinyXML parses an element by a recursive call: a deep enough file overflowed the stack (SIGSEGV,
 // adversarial sweep). Refused first, naming the file; markup inside comments, CDATA and attribute
 // values, and self-closing elements, do not count as nesting.
