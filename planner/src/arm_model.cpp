@@ -145,6 +145,11 @@ Pose toPose(const urdf::Pose& p) {
   return pose;
 }
 
+/// The smallest |factor| of a <mesh scale> (dimensionless). Real files scale by 1e-3 at the least
+/// (millimetres to metres); 1e-6 leaves room, and below it a link shrinks under a micrometre, far
+/// from any planning tolerance: a typo or a 0, as in scale="0 1 1".
+constexpr double kMinMeshScale = 1e-6;
+
 /// A vector as "(x, y, z)" for a message, 6 significant digits.
 std::string describe(const Vec3& v) {
   std::ostringstream out;
@@ -205,8 +210,20 @@ Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::v
       }();
       const Vec3 scale(m.scale.x, m.scale.y, m.scale.z);
       if (scale == Vec3::Ones()) return loaded;
+      // A negative factor mirrors the mesh (left and right arms share one); a zero one flattens the
+      // link, which would then be checked as a sheet or a point.
+      if (!scale.allFinite() || scale.cwiseAbs().minCoeff() < kMinMeshScale) {
+        throw InputError(where + ": mesh '" + m.filename + "' <mesh scale> must be finite with each factor at least " +
+                         "1e-6 in magnitude, got " + describe(scale));
+      }
       std::vector<Vec3> v = loaded.vertices();
-      for (Vec3& p : v) p = p.cwiseProduct(scale);
+      for (Vec3& p : v) {
+        p = p.cwiseProduct(scale);
+        if (p.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+          throw InputError(where + ": mesh '" + m.filename + "' <mesh scale> " + describe(scale) +
+                           " takes a vertex beyond 1e75, to " + describe(p));
+        }
+      }
       return Mesh(std::move(v), loaded.triangles(), loaded.name());
     }
   }

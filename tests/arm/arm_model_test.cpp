@@ -277,9 +277,10 @@ TEST(ArmModel, CollisionElementsUrdfdomCannotReadAreRefused) {
   }
 }
 
-// Collision geometry placed out of range: named by the URDF, the <collision> element's line and the
-// field (was: the link alone, by Mesh: "l2: vertex 0 has coordinate x = 1e+200").
-TEST(ArmModel, CollisionOriginOutOfRangeIsRefusedNamingTheField) {
+// Collision geometry placed or scaled out of range, or scaled to nothing: named by the URDF, the
+// <collision> element's line and the field (was: the link alone, by Mesh: "l2: vertex 0 has
+// coordinate x = 1e+200"; the mesh file for a scale of 1e80; a scale of 0 accepted as a point).
+TEST(ArmModel, CollisionOriginAndMeshScaleOutOfRangeAreRefusedNamingTheField) {
   test::ScratchDir dir;
   dir.write("t.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
                      "endloop\nendfacet\nendsolid t\n");
@@ -292,6 +293,9 @@ TEST(ArmModel, CollisionOriginOutOfRangeIsRefusedNamingTheField) {
   const std::vector<Case> cases = {
       {R"(<origin xyz="1e200 0 0"/><geometry><box size="1 1 1"/></geometry>)", "<collision> <origin xyz> must be finite and within 1e75"},
       {R"(<origin xyz="1e75 0 0"/><geometry><box size="1e70 1 1"/></geometry>)", "the collision geometry reaches"},
+      {R"(<geometry><mesh filename="t.stl" scale="0 1 1"/></geometry>)", "<mesh scale> must be finite"},
+      {R"(<geometry><mesh filename="t.stl" scale="1 1e-320 1"/></geometry>)", "<mesh scale> must be finite"},
+      {R"(<geometry><mesh filename="t.stl" scale="1e80 1 1"/></geometry>)", "<mesh scale> (1e+80, 1, 1) takes a vertex beyond 1e75"},
   };
   for (const Case& c : cases) {
     const std::string path = dir.write("out_of_range.urdf", robot(c.collision));
@@ -304,6 +308,9 @@ TEST(ArmModel, CollisionOriginOutOfRangeIsRefusedNamingTheField) {
       EXPECT_NE(what.find(c.mustSay), std::string::npos) << what;
     }
   }
+  // A mirroring scale is kept: left and right arms share one mesh.
+  const ArmModel mirrored = readUrdf(dir.write("mirrored.urdf", robot(R"(<geometry><mesh filename="t.stl" scale="1 -1 1"/></geometry>)")));
+  EXPECT_TRUE(mirrored.links[0].collision->bounds().min().isApprox(Vec3(0, -1, 0)));
 }
 
 // TinyXML parses an element by a recursive call: a deep enough file overflowed the stack (SIGSEGV,
