@@ -51,6 +51,7 @@ namespace {
 struct UrdfOutline {
   std::map<std::string, int> rank;                         ///< joint name -> position in the file
   std::map<std::string, int> linkLine;                     ///< link name -> line of its <link>
+  std::map<std::string, int> jointLine;                    ///< joint name -> line of its <joint>
   std::map<std::string, std::vector<int>> collisionLines;  ///< link name -> line of each <collision>
 };
 
@@ -108,6 +109,7 @@ UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
                        "' and '" + name + "': a joint cycle (a URDF is a tree)");
     }
     if (!order.rank.emplace(name, rank++).second) throw InputError(where + ": two joints are named '" + std::string(name) + "'");
+    order.jointLine[name] = j->Row();
   }
   std::vector<std::string> roots;
   for (const std::string& l : linkNames) {
@@ -279,13 +281,20 @@ std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& ur
   }
 }
 
-ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t childLink, const std::string& urdfPath) {
+ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t childLink, const std::string& urdfPath,
+                      const UrdfOutline& outline) {
   ArmJoint j;
   j.name = uj.name;
   j.parentLink = parentLink;
   j.childLink = childLink;
+  const std::string where = urdfPath + ":" + std::to_string(outline.jointLine.at(j.name)) + ": joint '" + j.name + "'";
+  const urdf::Vector3& at = uj.parent_to_joint_origin_transform.position;
+  const Vec3 offset(at.x, at.y, at.z);
+  // Beyond 1e75 the child link's vertices would be beyond what the distance computation accepts.
+  if (!offset.allFinite() || offset.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+    throw InputError(where + ": <origin xyz> must be finite and within 1e75, got " + describe(offset));
+  }
   j.origin = toPose(uj.parent_to_joint_origin_transform);
-  const std::string where = urdfPath + ": joint '" + j.name + "'";
   switch (uj.type) {
     case urdf::Joint::REVOLUTE: j.type = ArmJointType::revolute; break;
     case urdf::Joint::CONTINUOUS: j.type = ArmJointType::continuous; break;
@@ -305,9 +314,14 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
     if (!uj.limits) throw InputError(where + ": a revolute or prismatic joint needs <limit lower= upper=>");
     j.lower = uj.limits->lower;
     j.upper = uj.limits->upper;
-    if (!std::isfinite(j.lower) || !std::isfinite(j.upper) || j.lower > j.upper) {
-      throw InputError(where + ": limits must be finite with lower <= upper, got [" + std::to_string(j.lower) + ", " +
-                       std::to_string(j.upper) + "]");
+    // Within 1e75, so that the range upper - lower is finite too: [-1e308, 1e308] overflowed it,
+    // and every sampled state came out invalid.
+    const auto inRange = [](double x) { return std::isfinite(x) && std::fabs(x) <= tolerance::kMaxCoordinate; };
+    if (!inRange(j.lower) || !inRange(j.upper) || j.lower > j.upper) {
+      std::ostringstream got;
+      got << "[" << j.lower << ", " << j.upper << "]";
+      throw InputError(where + ": <limit lower= upper=> must be finite, within 1e75, with lower <= upper, got " +
+                       got.str());
     }
   }
   return j;
@@ -339,7 +353,7 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
     ArmLink link;
     link.name = visit.link->name;
     if (linkIndex > 0) {
-      model.joints.push_back(convertJoint(*visit.link->parent_joint, visit.parentLink, linkIndex, urdfPath));
+      model.joints.push_back(convertJoint(*visit.link->parent_joint, visit.parentLink, linkIndex, urdfPath, outline));
       link.parentJoint = static_cast<int>(model.joints.size() - 1);
       if (model.joints.back().type != ArmJointType::fixed) {
         model.activeJoints.push_back(model.joints.size() - 1);

@@ -313,6 +313,38 @@ TEST(ArmModel, CollisionOriginAndMeshScaleOutOfRangeAreRefusedNamingTheField) {
   EXPECT_TRUE(mirrored.links[0].collision->bounds().min().isApprox(Vec3(0, -1, 0)));
 }
 
+// A joint origin beyond 1e75 was accepted; limits of +-1e308 overflowed the range, so that every
+// state came out invalid ("not solved"). Refused, naming the URDF, the joint's line and the field.
+TEST(ArmModel, JointOriginAndLimitsOutOfRangeAreRefusedNamingTheJoint) {
+  test::ScratchDir dir;
+  const auto robot = [](const std::string& origin, const std::string& limit) {
+    return "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n"
+           "<joint name=\"j\" type=\"prismatic\">\n<parent link=\"a\"/><child link=\"b\"/>\n" +
+           origin + "<axis xyz=\"1 0 0\"/>\n" + limit + "\n</joint>\n</robot>\n";
+  };
+  const std::string limit = R"(<limit lower="-1" upper="1" effort="1" velocity="1"/>)";
+  struct Case {
+    std::string text, mustSay;
+  };
+  const std::vector<Case> cases = {
+      {robot(R"(<origin xyz="1e100 0 0"/>)", limit), "<origin xyz> must be finite and within 1e75, got (1e+100, 0, 0)"},
+      {robot("", R"(<limit lower="-1e308" upper="1e308" effort="1" velocity="1"/>)"),
+       "<limit lower= upper=> must be finite, within 1e75, with lower <= upper, got [-1e+308, 1e+308]"},
+      {robot("", R"(<limit lower="0" upper="1e76" effort="1" velocity="1"/>)"),
+       "<limit lower= upper=> must be finite, within 1e75, with lower <= upper, got [0, 1e+76]"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = dir.write("joint.urdf", c.text);
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << c.text << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ":4: joint 'j': " + c.mustSay);
+    }
+  }
+  EXPECT_EQ(readUrdf(dir.write("fine.urdf", robot(R"(<origin xyz="1e6 0 0"/>)", limit))).joints[0].upper, 1.0);
+}
+
 // TinyXML parses an element by a recursive call: a deep enough file overflowed the stack (SIGSEGV,
 // adversarial sweep). Refused first, naming the file; markup inside comments, CDATA and attribute
 // values, and self-closing elements, do not count as nesting.
