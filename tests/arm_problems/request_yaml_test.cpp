@@ -73,6 +73,10 @@ TEST(MotionPlanRequestYamlErrors, MissingFieldsWrongTypesAndBadNumbers) {
   EXPECT_ERROR(withLine(13, "        position: 1,5"), ":13:", "expected a finite number, got '1,5'");
   EXPECT_ERROR(withLine(14, "        tolerance_above: -0.001"), ":14:", "a tolerance must be >= 0");
   EXPECT_ERROR(withLine(4, "allowed_planning_time: 0"), ":4:", "must be > 0");
+  // As the .cfg reader's time_limit: 1e20 overflowed OMPL's deadline ("not solved" at once).
+  EXPECT_ERROR(withLine(4, "allowed_planning_time: 1e20"), ":4:",
+               "field 'allowed_planning_time': '1e20' seconds is longer than the clock can count (at most 1e8)");
+  EXPECT_EQ(parseMotionPlanRequestYaml(withLine(4, "allowed_planning_time: 1e8"), "r.yaml").allowedPlanningTime, 1e8);
   EXPECT_ERROR("group_name: g\nstart_state: {joint_state: {name: [a], position: [0]}}\ngoal_constraints:\n"
                "  - joint_constraints: []\n",
                ":4:", "no joint constraints");
