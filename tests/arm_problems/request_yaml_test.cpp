@@ -89,5 +89,13 @@ TEST(MotionPlanRequestYamlErrors, MissingFieldsWrongTypesAndBadNumbers) {
   EXPECT_ERROR("group_name: [g\n", ":", "not valid YAML");
 }
 
+// yaml-cpp keeps the first of two equal keys: a second group_name or position list was ignored.
+TEST(MotionPlanRequestYamlErrors, RepeatedKeyNamesItsLineAndTheFirst) {
+  EXPECT_ERROR(withLine(3, "group_name: other"), ":3:", "key 'group_name' appears twice in one map (first at line 2)");
+  EXPECT_ERROR(withLine(8, "    position: [1, 1, 1]"), ":9:", "key 'position' appears twice in one map (first at line 8)");
+  // The same key in different maps, and a key repeated through an alias, are fine.
+  EXPECT_NO_THROW(parseMotionPlanRequestYaml(withLine(7, "    header: &h {frame_id: world}\n    extra: *h"), "r.yaml"));
+}
+
 }  // namespace
 }  // namespace adsd::planner
