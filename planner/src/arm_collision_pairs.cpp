@@ -6,7 +6,7 @@
 
 #include "adsd/error.h"
 #include "input_file.h"
-#include "xml_nesting.h"
+#include "xml_input.h"
 
 namespace adsd::planner {
 
@@ -68,12 +68,8 @@ std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmMode
 
 void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, ArmCollisionPairs& pairs) {
   const std::string text = readInputFile(srdfPath, "SRDF file");
-  xml::refuseDeepNesting(srdfPath, text);  // before TinyXML's recursive parser
   TiXmlDocument doc;
-  doc.Parse(text.c_str());
-  if (doc.Error()) {
-    throw InputError(srdfPath + ":" + std::to_string(doc.ErrorRow()) + ": not XML: " + doc.ErrorDesc());
-  }
+  xml::parseXml(srdfPath, text, doc);
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(srdfPath + ": no <robot> element: not an SRDF file");
   for (const TiXmlElement* e = robot->FirstChildElement("disable_collisions"); e;

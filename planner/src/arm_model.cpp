@@ -16,7 +16,7 @@
 #include "adsd/tolerances.h"
 #include "adsd/planner/primitive_meshes.h"
 #include "input_file.h"
-#include "xml_nesting.h"
+#include "xml_input.h"
 
 namespace adsd::planner {
 
@@ -56,12 +56,8 @@ struct UrdfOutline {
 };
 
 UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
-  xml::refuseDeepNesting(path, text);  // before any recursive parser, ours or urdfdom's
   TiXmlDocument doc;
-  doc.Parse(text.c_str());
-  if (doc.Error()) {
-    throw InputError(path + ":" + std::to_string(doc.ErrorRow()) + ": not XML: " + doc.ErrorDesc());
-  }
+  xml::parseXml(path, text, doc);  // its nesting checked before any recursive parser, ours or urdfdom's
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(path + ": no <robot> element: not a URDF file");
   UrdfOutline order;
@@ -76,6 +72,7 @@ UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
       lines.push_back(c->Row());
     }
   }
+  if (linkNames.empty()) throw InputError(path + ": no <link> elements: a robot needs at least one link");
   std::map<std::string, std::string> parentJointOf;  // child link -> joint
   int rank = 0;
   for (const TiXmlElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {

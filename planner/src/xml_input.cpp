@@ -1,4 +1,4 @@
-#include "xml_nesting.h"
+#include "xml_input.h"
 
 #include <algorithm>
 #include <cstring>
@@ -61,6 +61,15 @@ void refuseDeepNesting(const std::string& path, const std::string& text) {
                          std::to_string(kMaxElementDepth) + " deep: refused before parsing (a robot description nests about 5 deep)");
       }
     }
+  }
+}
+
+void parseXml(const std::string& path, const std::string& text, TiXmlDocument& doc) {
+  refuseDeepNesting(path, text);
+  doc.Parse(text.c_str());
+  if (doc.Error()) {
+    const std::string line = doc.ErrorRow() > 0 ? ":" + std::to_string(doc.ErrorRow()) : "";
+    throw InputError(path + line + ": not XML: " + doc.ErrorDesc());
   }
 }
 

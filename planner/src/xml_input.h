@@ -1,11 +1,15 @@
 #pragma once
 /// \file
-/// \brief Internal: refusing an XML text nested too deeply for TinyXML, before it is parsed.
+/// \brief Internal: parsing the XML of a URDF or SRDF file with TinyXML so that every failure is
+/// one adsd::InputError naming the file and, where TinyXML knows it, the line.
 ///
 /// TinyXML (ours, and urdfdom's) parses each element by a recursive call, so that a few hundred
-/// kilobytes of `<z><z><z>...` overflow the stack. The scan here is flat and linear. Not installed.
+/// kilobytes of `<z><z><z>...` overflow the stack: refuseDeepNesting() scans first, flat and
+/// linear. Not installed.
 
 #include <string>
+
+#include <tinyxml.h>
 
 namespace adsd::planner::xml {
 
@@ -21,5 +25,10 @@ constexpr int kMaxElementDepth = 500;
 /// are skipped, so that a '<' or '/>' inside them is not counted. Mismatched tags are left for the
 /// parser to report.
 void refuseDeepNesting(const std::string& path, const std::string& text);
+
+/// \brief Parses \p text into \p doc after refuseDeepNesting(); a syntax error is an InputError
+/// "PATH:LINE: not XML: ...", without the line when TinyXML does not know it (an empty file, one
+/// cut off inside an element: it reports row 0).
+void parseXml(const std::string& path, const std::string& text, TiXmlDocument& doc);
 
 }  // namespace adsd::planner::xml

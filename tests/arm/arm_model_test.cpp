@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <random>
@@ -229,6 +230,7 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
                            joint("j2", "revolute", "b", "c") + joint("j3", "revolute", "c", "b")), "cycle"},
       {"loop.urdf", robot(link + "<link name=\"b\"/>" + joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "b", "a")), "cycle"},
       {"two_roots.urdf", robot(link + "<link name=\"b\"/>"), "root links"},
+      {"no_links.urdf", "<robot name=\"r\"/>", "no <link> elements"},
       {"undefined_link.urdf", robot(link + joint("j", "revolute", "a", "zz")), "'zz'"},
       {"bad_limits.urdf", robot(link + "<link name=\"b\"/>" + "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/><limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/></joint>"), "joint 'j'"},
   };
@@ -379,6 +381,30 @@ TEST(ArmModel, XmlNestedTooDeeplyIsRefusedBeforeParsing) {
   const ArmModel shallow = readUrdf(dir.write("shallow.urdf", "<?xml version=\"1.0\"?><robot name=\"x\">" + notNesting +
                                                                  "<link name=\"a\"/></robot>"));
   EXPECT_EQ(shallow.links.size(), 1u);
+}
+
+// TinyXML reports row 0 where it does not know the place (an empty file, one cut off): the line is
+// left out then, and given where it is known (was ":0:" for both).
+TEST(ArmModel, XmlErrorsGiveTheLineWhenTinyXmlKnowsIt) {
+  test::ScratchDir dir;
+  const auto errorOf = [](const std::function<void()>& read) {
+    try {
+      read();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string empty = dir.write("empty.urdf", "");
+  EXPECT_EQ(errorOf([&] { readUrdf(empty); }), empty + ": not XML: Error document empty.");
+  const std::string badEnd = dir.write("bad_end.urdf", "<robot name=\"r\">\n<link name=\"a\">\n</robot>\n");
+  EXPECT_EQ(errorOf([&] { readUrdf(badEnd); }).rfind(badEnd + ":3: not XML: ", 0), 0u);
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  ArmCollisionPairs pairs(m);
+  const std::string emptySrdf = dir.write("empty.srdf", "\n\n");
+  EXPECT_EQ(errorOf([&] { disablePairsFromSrdf(m, emptySrdf, pairs); }), emptySrdf + ": not XML: Error document empty.");
+  const std::string cut = dir.write("cut.srdf", "<robot name=\"slider_arm\">\n<disable_collisions link1=\"a\"\n");
+  EXPECT_EQ(errorOf([&] { disablePairsFromSrdf(m, cut, pairs); }).rfind(cut + ":2: not XML: ", 0), 0u);
 }
 
 TEST(ArmModel, MeshScaleAndFileUrisAndPackageSearchPath) {
