@@ -266,15 +266,17 @@ JointValues jointState(const Document& doc, const Field& state) {
     doc.fail(positions.node.IsDefined() ? positions : names,
              std::to_string(m) + " positions for " + std::to_string(n) + " joint names");
   }
+  std::map<std::string, int> nameLines;  // the repeat is named by the line of the first name, not its position
   for (std::size_t i = 0; i < n; ++i) {
     const Field name = doc.element(names, i);
     const std::string joint = doc.text(name);
     if (joint.empty()) doc.fail(name, "an empty joint name");
     const Field position = doc.element(positions, i);
     const double value = doc.number(position);
-    if (!out.values.emplace(joint, value).second) {
-      doc.fail(name, "joint " + quoted(joint) + " appears twice (first at line " + std::to_string(out.lines[joint]) + ")");
+    if (const auto [first, fresh] = nameLines.emplace(joint, name.line); !fresh) {
+      doc.fail(name, "joint " + quoted(joint) + " appears twice (first at line " + std::to_string(first->second) + ")");
     }
+    out.values.emplace(joint, value);
     out.lines[joint] = position.line;
   }
   return out;

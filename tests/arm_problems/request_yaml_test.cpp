@@ -62,7 +62,8 @@ std::string withLine(int line, const std::string& replacement) {
 
 TEST(MotionPlanRequestYamlErrors, StartNamesAndPositionsOfDifferentLengths) {
   EXPECT_ERROR(withLine(9, "    position: [0.1, -0.2]"), ":9:", "2 positions for 3 joint names");
-  EXPECT_ERROR(withLine(8, "    name: [a, b, a]"), ":8:", "joint 'a' appears twice");
+  // The first name's line (was its position's: "first at line 9").
+  EXPECT_ERROR(withLine(8, "    name: [a, b, a]"), ":8:", "joint 'a' appears twice (first at line 8)");
 }
 
 TEST(MotionPlanRequestYamlErrors, MissingFieldsWrongTypesAndBadNumbers) {
