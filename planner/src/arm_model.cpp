@@ -60,14 +60,17 @@ UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
   xml::parseXml(path, text, doc);  // its nesting checked before any recursive parser, ours or urdfdom's
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(path + ": no <robot> element: not a URDF file");
-  UrdfOutline order;
+  UrdfOutline outline;
   std::set<std::string> linkNames;
   for (const TiXmlElement* l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link")) {
     const char* name = l->Attribute("name");
     if (!name) throw InputError(path + ":" + std::to_string(l->Row()) + ": a <link> without a name");
-    linkNames.insert(name);
-    order.linkLine[name] = l->Row();
-    std::vector<int>& lines = order.collisionLines[name];
+    // Refused here, as urdfdom does, so that the lines below belong to one link each.
+    if (!linkNames.insert(name).second) {
+      throw InputError(path + ":" + std::to_string(l->Row()) + ": two links are named '" + name + "'");
+    }
+    outline.linkLine[name] = l->Row();
+    std::vector<int>& lines = outline.collisionLines[name];
     for (const TiXmlElement* c = l->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision")) {
       lines.push_back(c->Row());
     }
@@ -105,8 +108,8 @@ UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
       throw InputError(where + ": link '" + std::string(childLink) + "' is the child of joints '" + it->second +
                        "' and '" + name + "': a joint cycle (a URDF is a tree)");
     }
-    if (!order.rank.emplace(name, rank++).second) throw InputError(where + ": two joints are named '" + std::string(name) + "'");
-    order.jointLine[name] = j->Row();
+    if (!outline.rank.emplace(name, rank++).second) throw InputError(where + ": two joints are named '" + std::string(name) + "'");
+    outline.jointLine[name] = j->Row();
   }
   std::vector<std::string> roots;
   for (const std::string& l : linkNames) {
@@ -134,7 +137,7 @@ UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
   for (const std::string& l : linkNames) {
     if (!reached.count(l)) throw InputError(path + ": link '" + l + "' lies on a joint cycle (joint '" + parentJointOf[l] + "')");
   }
-  return order;
+  return outline;
 }
 
 Pose toPose(const urdf::Pose& p) {

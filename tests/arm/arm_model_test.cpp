@@ -231,6 +231,7 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
       {"loop.urdf", robot(link + "<link name=\"b\"/>" + joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "b", "a")), "cycle"},
       {"two_roots.urdf", robot(link + "<link name=\"b\"/>"), "root links"},
       {"no_links.urdf", "<robot name=\"r\"/>", "no <link> elements"},
+      {"two_links_a.urdf", robot(link + link), "two links are named 'a'"},
       {"undefined_link.urdf", robot(link + joint("j", "revolute", "a", "zz")), "'zz'"},
       {"bad_limits.urdf", robot(link + "<link name=\"b\"/>" + "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/><limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/></joint>"), "joint 'j'"},
   };
