@@ -5,6 +5,8 @@
 #include <tinyxml.h>
 
 #include "adsd/error.h"
+#include "input_file.h"
+#include "xml_input.h"
 
 namespace adsd::planner {
 
@@ -65,11 +67,9 @@ std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmMode
 }
 
 void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, ArmCollisionPairs& pairs) {
+  const std::string text = readInputFile(srdfPath, "SRDF file");
   TiXmlDocument doc;
-  if (!doc.LoadFile(srdfPath.c_str())) {
-    if (doc.ErrorId() == TiXmlBase::TIXML_ERROR_OPENING_FILE) throw InputError(srdfPath + ": cannot open the SRDF file");
-    throw InputError(srdfPath + ":" + std::to_string(doc.ErrorRow()) + ": not XML: " + doc.ErrorDesc());
-  }
+  xml::parseXml(srdfPath, text, doc);
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(srdfPath + ": no <robot> element: not an SRDF file");
   for (const TiXmlElement* e = robot->FirstChildElement("disable_collisions"); e;

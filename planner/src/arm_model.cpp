@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <set>
@@ -14,7 +13,10 @@
 
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
+#include "adsd/tolerances.h"
 #include "adsd/planner/primitive_meshes.h"
+#include "input_file.h"
+#include "xml_input.h"
 
 namespace adsd::planner {
 
@@ -42,37 +44,38 @@ void ArmModel::buildHierarchies() {
 
 namespace {
 
-std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the URDF file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) throw InputError(path + ": cannot read the URDF file");
-  return text.str();
-}
-
-/// What urdfdom does not say clearly (it logs a line and returns null), checked on the XML first
-/// so that the error names the joint or link: joint types, the tree's shape, and the file order
-/// of the joints (urdfdom keeps joints in a map by name, which loses it).
-struct JointOrder {
-  std::map<std::string, int> rank;  ///< joint name -> position in the file
+/// What urdfdom does not say clearly (it logs a line and returns null, or drops an element),
+/// checked on the XML first so that the error names the joint or link: joint types, the tree's
+/// shape; and what urdfdom loses: the file order of the joints (it keeps them in a map by name)
+/// and the lines of the links and their <collision> elements.
+struct UrdfOutline {
+  std::map<std::string, int> rank;                         ///< joint name -> position in the file
+  std::map<std::string, int> linkLine;                     ///< link name -> line of its <link>
+  std::map<std::string, int> jointLine;                    ///< joint name -> line of its <joint>
+  std::map<std::string, std::vector<int>> collisionLines;  ///< link name -> line of each <collision>
 };
 
-JointOrder checkTreeShape(const std::string& path, const std::string& text) {
+UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
   TiXmlDocument doc;
-  doc.Parse(text.c_str());
-  if (doc.Error()) {
-    throw InputError(path + ":" + std::to_string(doc.ErrorRow()) + ": not XML: " + doc.ErrorDesc());
-  }
+  xml::parseXml(path, text, doc);  // its nesting checked before any recursive parser, ours or urdfdom's
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(path + ": no <robot> element: not a URDF file");
-  JointOrder order;
+  UrdfOutline outline;
   std::set<std::string> linkNames;
   for (const TiXmlElement* l = robot->FirstChildElement("link"); l; l = l->NextSiblingElement("link")) {
     const char* name = l->Attribute("name");
     if (!name) throw InputError(path + ":" + std::to_string(l->Row()) + ": a <link> without a name");
-    linkNames.insert(name);
+    // Refused here, as urdfdom does, so that the lines below belong to one link each.
+    if (!linkNames.insert(name).second) {
+      throw InputError(path + ":" + std::to_string(l->Row()) + ": two links are named '" + name + "'");
+    }
+    outline.linkLine[name] = l->Row();
+    std::vector<int>& lines = outline.collisionLines[name];
+    for (const TiXmlElement* c = l->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision")) {
+      lines.push_back(c->Row());
+    }
   }
+  if (linkNames.empty()) throw InputError(path + ": no <link> elements: a robot needs at least one link");
   std::map<std::string, std::string> parentJointOf;  // child link -> joint
   int rank = 0;
   for (const TiXmlElement* j = robot->FirstChildElement("joint"); j; j = j->NextSiblingElement("joint")) {
@@ -105,7 +108,8 @@ JointOrder checkTreeShape(const std::string& path, const std::string& text) {
       throw InputError(where + ": link '" + std::string(childLink) + "' is the child of joints '" + it->second +
                        "' and '" + name + "': a joint cycle (a URDF is a tree)");
     }
-    if (!order.rank.emplace(name, rank++).second) throw InputError(where + ": two joints are named '" + std::string(name) + "'");
+    if (!outline.rank.emplace(name, rank++).second) throw InputError(where + ": two joints are named '" + std::string(name) + "'");
+    outline.jointLine[name] = j->Row();
   }
   std::vector<std::string> roots;
   for (const std::string& l : linkNames) {
@@ -133,7 +137,7 @@ JointOrder checkTreeShape(const std::string& path, const std::string& text) {
   for (const std::string& l : linkNames) {
     if (!reached.count(l)) throw InputError(path + ": link '" + l + "' lies on a joint cycle (joint '" + parentJointOf[l] + "')");
   }
-  return order;
+  return outline;
 }
 
 Pose toPose(const urdf::Pose& p) {
@@ -141,6 +145,18 @@ Pose toPose(const urdf::Pose& p) {
   pose.linear() = Eigen::Quaterniond(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z).normalized().toRotationMatrix();
   pose.translation() = Vec3(p.position.x, p.position.y, p.position.z);
   return pose;
+}
+
+/// The smallest |factor| of a <mesh scale> (dimensionless). Real files scale by 1e-3 at the least
+/// (millimetres to metres); 1e-6 leaves room, and below it a link shrinks under a micrometre, far
+/// from any planning tolerance: a typo or a 0, as in scale="0 1 1".
+constexpr double kMinMeshScale = 1e-6;
+
+/// A vector as "(x, y, z)" for a message, 6 significant digits.
+std::string describe(const Vec3& v) {
+  std::ostringstream out;
+  out << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return out.str();
 }
 
 /// Resolves a mesh file name (see readUrdf()); throws naming the link when nothing is found.
@@ -196,8 +212,20 @@ Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::v
       }();
       const Vec3 scale(m.scale.x, m.scale.y, m.scale.z);
       if (scale == Vec3::Ones()) return loaded;
+      // A negative factor mirrors the mesh (left and right arms share one); a zero one flattens the
+      // link, which would then be checked as a sheet or a point.
+      if (!scale.allFinite() || scale.cwiseAbs().minCoeff() < kMinMeshScale) {
+        throw InputError(where + ": mesh '" + m.filename + "' <mesh scale> must be finite with each factor at least " +
+                         "1e-6 in magnitude, got " + describe(scale));
+      }
       std::vector<Vec3> v = loaded.vertices();
-      for (Vec3& p : v) p = p.cwiseProduct(scale);
+      for (Vec3& p : v) {
+        p = p.cwiseProduct(scale);
+        if (p.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+          throw InputError(where + ": mesh '" + m.filename + "' <mesh scale> " + describe(scale) +
+                           " takes a vertex beyond 1e75, to " + describe(p));
+        }
+      }
       return Mesh(std::move(v), loaded.triangles(), loaded.name());
     }
   }
@@ -205,32 +233,68 @@ Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::v
 }
 
 /// Every <collision> element of a link, placed by its origin, in one mesh (link frame).
+///
+/// urdfdom drops a <collision> element it cannot read (a "nan", a scale of two numbers, an empty
+/// <geometry>) after logging a line, and reads the rest: the link would silently go unchecked
+/// for collisions. So every element of the XML must have come through.
 std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& urdfDir,
-                                      const std::vector<std::string>& search, const std::string& path) {
+                                      const std::vector<std::string>& search, const std::string& path,
+                                      const UrdfOutline& outline) {
   std::vector<urdf::CollisionSharedPtr> elements = link.collision_array;
   if (elements.empty() && link.collision) elements.push_back(link.collision);
+  const std::vector<int>& lines = outline.collisionLines.at(link.name);
+  const std::string linkWhere = path + ":" + std::to_string(outline.linkLine.at(link.name)) + ": link '" + link.name + "'";
+  if (elements.size() != lines.size()) {
+    throw InputError(linkWhere + ": urdfdom read " + std::to_string(elements.size()) + " of its " +
+                     std::to_string(lines.size()) + " <collision> elements (its message is above); refused " +
+                     "rather than leave the link unchecked");
+  }
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
-  for (const urdf::CollisionSharedPtr& c : elements) {
-    if (!c || !c->geometry) continue;
-    const std::string where = path + ": link '" + link.name + "'";
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    const urdf::CollisionSharedPtr& c = elements[k];
+    const std::string where = path + ":" + std::to_string(lines[k]) + ": link '" + link.name + "'";
+    if (!c || !c->geometry) throw InputError(where + ": a <collision> element without geometry");
+    const Vec3 offset(c->origin.position.x, c->origin.position.y, c->origin.position.z);
+    if (!offset.allFinite() || offset.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+      throw InputError(where + ": <collision> <origin xyz> must be finite and within 1e75, got " + describe(offset));
+    }
     const Mesh part = geometryMesh(*c->geometry, urdfDir, search, where);
     const Pose origin = toPose(c->origin);
-    const auto offset = static_cast<std::uint32_t>(vertices.size());
-    for (const Vec3& p : part.vertices()) vertices.push_back(origin * p);
-    for (const TriangleIndices& t : part.triangles()) triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    const auto first = static_cast<std::uint32_t>(vertices.size());
+    for (const Vec3& p : part.vertices()) {
+      const Vec3 placed = origin * p;
+      // Each summand is within 1e75, but their sum may not be; Mesh would then name only the link.
+      if (placed.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+        throw InputError(where + ": placed by its <origin>, the collision geometry reaches " + describe(placed) +
+                         ", beyond 1e75");
+      }
+      vertices.push_back(placed);
+    }
+    for (const TriangleIndices& t : part.triangles()) triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
   }
   if (triangles.empty()) return std::nullopt;
-  return Mesh(std::move(vertices), std::move(triangles), link.name);
+  try {
+    return Mesh(std::move(vertices), std::move(triangles), link.name);
+  } catch (const InputError& e) {
+    throw InputError(linkWhere + ": its collision geometry: " + e.what());
+  }
 }
 
-ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t childLink, const std::string& urdfPath) {
+ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t childLink, const std::string& urdfPath,
+                      const UrdfOutline& outline) {
   ArmJoint j;
   j.name = uj.name;
   j.parentLink = parentLink;
   j.childLink = childLink;
+  const std::string where = urdfPath + ":" + std::to_string(outline.jointLine.at(j.name)) + ": joint '" + j.name + "'";
+  const urdf::Vector3& at = uj.parent_to_joint_origin_transform.position;
+  const Vec3 offset(at.x, at.y, at.z);
+  // Beyond 1e75 the child link's vertices would be beyond what the distance computation accepts.
+  if (!offset.allFinite() || offset.cwiseAbs().maxCoeff() > tolerance::kMaxCoordinate) {
+    throw InputError(where + ": <origin xyz> must be finite and within 1e75, got " + describe(offset));
+  }
   j.origin = toPose(uj.parent_to_joint_origin_transform);
-  const std::string where = urdfPath + ": joint '" + j.name + "'";
   switch (uj.type) {
     case urdf::Joint::REVOLUTE: j.type = ArmJointType::revolute; break;
     case urdf::Joint::CONTINUOUS: j.type = ArmJointType::continuous; break;
@@ -250,9 +314,14 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
     if (!uj.limits) throw InputError(where + ": a revolute or prismatic joint needs <limit lower= upper=>");
     j.lower = uj.limits->lower;
     j.upper = uj.limits->upper;
-    if (!std::isfinite(j.lower) || !std::isfinite(j.upper) || j.lower > j.upper) {
-      throw InputError(where + ": limits must be finite with lower <= upper, got [" + std::to_string(j.lower) + ", " +
-                       std::to_string(j.upper) + "]");
+    // Within 1e75, so that the range upper - lower is finite too: [-1e308, 1e308] overflowed it,
+    // and every sampled state came out invalid.
+    const auto inRange = [](double x) { return std::isfinite(x) && std::fabs(x) <= tolerance::kMaxCoordinate; };
+    if (!inRange(j.lower) || !inRange(j.upper) || j.lower > j.upper) {
+      std::ostringstream got;
+      got << "[" << j.lower << ", " << j.upper << "]";
+      throw InputError(where + ": <limit lower= upper=> must be finite, within 1e75, with lower <= upper, got " +
+                       got.str());
     }
   }
   return j;
@@ -261,8 +330,8 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
 }  // namespace
 
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath) {
-  const std::string text = readWholeFile(urdfPath);
-  const JointOrder order = checkTreeShape(urdfPath, text);
+  const std::string text = readInputFile(urdfPath, "URDF file");
+  const UrdfOutline outline = checkTreeShape(urdfPath, text);
   const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(text);
   if (!urdf || !urdf->getRoot()) throw InputError(urdfPath + ": urdfdom cannot read this URDF (its message is above)");
   const fs::path urdfDir = fs::absolute(fs::path(urdfPath)).parent_path();
@@ -284,19 +353,19 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
     ArmLink link;
     link.name = visit.link->name;
     if (linkIndex > 0) {
-      model.joints.push_back(convertJoint(*visit.link->parent_joint, visit.parentLink, linkIndex, urdfPath));
+      model.joints.push_back(convertJoint(*visit.link->parent_joint, visit.parentLink, linkIndex, urdfPath, outline));
       link.parentJoint = static_cast<int>(model.joints.size() - 1);
       if (model.joints.back().type != ArmJointType::fixed) {
         model.activeJoints.push_back(model.joints.size() - 1);
         model.joints.back().active = static_cast<int>(model.activeJoints.size() - 1);
       }
     }
-    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath);
+    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath, outline);
     model.links.push_back(std::move(link));
 
     std::vector<urdf::JointSharedPtr> childJoints = visit.link->child_joints;
     std::sort(childJoints.begin(), childJoints.end(), [&](const urdf::JointSharedPtr& a, const urdf::JointSharedPtr& b) {
-      return order.rank.at(a->name) < order.rank.at(b->name);
+      return outline.rank.at(a->name) < outline.rank.at(b->name);
     });
     // Pushed in reverse, so that the first child in the file is visited first.
     for (auto it = childJoints.rbegin(); it != childJoints.rend(); ++it) {

@@ -82,6 +82,9 @@ void checkLimits(const ArmModel& model, const std::vector<double>& q, const std:
 /// message would name only the missing file).
 void requireFile(const std::string& path, const SourceLocation& where, const char* what) {
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(where.describe() + ": " + what + " '" + path + "' is a directory");
+  }
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw InputError(where.describe() + ": " + what + " '" + path + "' does not exist");
   }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "adsd/error.h"
+#include "input_file.h"
 #include "yaml_input.h"
 
 namespace adsd::planner {
@@ -166,7 +167,7 @@ MotionBenchMakerProblem parseMotionBenchMakerProblem(const std::string& text, co
 }
 
 MotionBenchMakerProblem readMotionBenchMakerProblem(const std::string& path) {
-  const std::string text = yaml::readWholeFile(path, "problem file");
+  const std::string text = readInputFile(path, "problem file");
   return parseMotionBenchMakerProblem(text, path, fs::path(path).parent_path().string());
 }
 

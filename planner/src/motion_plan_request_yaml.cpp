@@ -1,6 +1,8 @@
 #include "adsd/planner/motion_plan_request_yaml.h"
 
 #include "adsd/error.h"
+#include "adsd/planner/problem_file.h"
+#include "input_file.h"
 #include "yaml_input.h"
 
 // The format, as relied on here: moveit_msgs/MotionPlanRequest (workspace_parameters, start_state
@@ -71,13 +73,17 @@ MotionPlanRequestYaml parseMotionPlanRequestYaml(const std::string& text, const 
   if (const Field time = doc.child(root, "allowed_planning_time"); time.node.IsDefined()) {
     const double t = doc.number(time);
     if (!(t > 0.0)) doc.fail(time, "the planning time must be > 0");
+    // Far beyond it the deadline overflowed: 1e20 s was "not solved" after 4 ms.
+    if (t > kMaxTimeLimitSeconds) {
+      doc.fail(time, yaml::quoted(time.node.Scalar()) + " seconds is longer than the clock can count (at most 1e8)");
+    }
     request.allowedPlanningTime = t;
   }
   return request;
 }
 
 MotionPlanRequestYaml readMotionPlanRequestYaml(const std::string& path) {
-  return parseMotionPlanRequestYaml(yaml::readWholeFile(path, "request file"), path);
+  return parseMotionPlanRequestYaml(readInputFile(path, "request file"), path);
 }
 
 }  // namespace adsd::planner

@@ -5,6 +5,7 @@
 
 #include "adsd/error.h"
 #include "adsd/planner/primitive_meshes.h"
+#include "input_file.h"
 #include "yaml_input.h"
 
 // The format, as relied on here (public sources read 2026-11-25):
@@ -202,7 +203,7 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
 }
 
 PlanningSceneYaml readPlanningSceneYaml(const std::string& path) {
-  return parsePlanningSceneYaml(yaml::readWholeFile(path, "scene file"), path);
+  return parsePlanningSceneYaml(readInputFile(path, "scene file"), path);
 }
 
 }  // namespace adsd::planner

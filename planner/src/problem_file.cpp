@@ -52,10 +52,6 @@ struct SectionHeader {
 /// largest double (1.8e308), so the extent, and the segment length derived from it, stay finite.
 constexpr double kMaxCoordinateMagnitude = 1e150;
 
-/// The longest time limit accepted (seconds). OMPL adds it to the system clock's now() in 64-bit
-/// nanoseconds, which overflow 2^63 ns (292 years) after 1970; 1e8 s (3.2 years) stays far inside.
-constexpr double kMaxTimeLimitSeconds = 1e8;
-
 /// OMPL's StateSpace::setLongestValidSegmentFraction throws unless the fraction f satisfies
 /// eps <= f <= 1 - eps with eps the machine epsilon of double (dimensionless).
 constexpr double kOmplSegmentFractionMargin = std::numeric_limits<double>::epsilon();

@@ -4,12 +4,13 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <locale.h>  // newlocale, strtod_l (POSIX): numbers read in the C locale
 #include <stdlib.h>
+
+#include <yaml-cpp/eventhandler.h>
 
 #include "adsd/error.h"
 #include "decimal_number.h"
@@ -39,6 +40,56 @@ const char* kindName(const YAML::Node& n) {
   }
 }
 
+/// yaml-cpp keeps the first of two equal keys in a map and drops the second without a word (a
+/// second `primitives:` or `position:` was silently ignored). Its parser's events show every key as
+/// written, aliases unexpanded, so one linear pass over them finds a repeat.
+class RepeatedKeyFinder : public YAML::EventHandler {
+ public:
+  explicit RepeatedKeyFinder(const std::string& source) : source_(source) {}
+
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override { takeSlot(); }
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override { takeSlot(); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t, const std::string& value) override {
+    if (!takeSlot()) return;
+    const int line = mark.line + 1;  // yaml-cpp's marks are 0-based
+    const auto [first, fresh] = open_.back().keyLines.emplace(value, line);
+    if (!fresh) {
+      throw InputError(source_ + ":" + std::to_string(line) + ": key " + quoted(value) +
+                       " appears twice in one map (first at line " + std::to_string(first->second) + ")");
+    }
+  }
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    takeSlot();
+    open_.push_back({false, true, {}});
+  }
+  void OnSequenceEnd() override { open_.pop_back(); }
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    takeSlot();
+    open_.push_back({true, true, {}});
+  }
+  void OnMapEnd() override { open_.pop_back(); }
+
+ private:
+  struct Collection {
+    bool isMap;
+    bool nextIsKey;                       ///< a map's nodes alternate key, value
+    std::map<std::string, int> keyLines;  ///< scalar key -> its line
+  };
+
+  /// A node begins in the innermost open collection: true when it is a map's key.
+  bool takeSlot() {
+    if (open_.empty() || !open_.back().isMap) return false;
+    const bool isKey = open_.back().nextIsKey;
+    open_.back().nextIsKey = !isKey;
+    return isKey;
+  }
+
+  const std::string& source_;
+  std::vector<Collection> open_;
+};
+
 }  // namespace
 
 std::string quoted(const std::string& text) {
@@ -64,6 +115,10 @@ Document::Document(const std::string& text, std::string source)
     }
     throw InputError(source_ + line + ": not valid YAML: " + what);
   }
+  std::istringstream events(text);
+  YAML::Parser parser(events);
+  RepeatedKeyFinder finder(source_);
+  parser.HandleNextDocument(finder);
 }
 
 Field Document::root() const {
@@ -211,31 +266,20 @@ JointValues jointState(const Document& doc, const Field& state) {
     doc.fail(positions.node.IsDefined() ? positions : names,
              std::to_string(m) + " positions for " + std::to_string(n) + " joint names");
   }
+  std::map<std::string, int> nameLines;  // the repeat is named by the line of the first name, not its position
   for (std::size_t i = 0; i < n; ++i) {
     const Field name = doc.element(names, i);
     const std::string joint = doc.text(name);
     if (joint.empty()) doc.fail(name, "an empty joint name");
     const Field position = doc.element(positions, i);
     const double value = doc.number(position);
-    if (!out.values.emplace(joint, value).second) {
-      doc.fail(name, "joint " + quoted(joint) + " appears twice (first at line " + std::to_string(out.lines[joint]) + ")");
+    if (const auto [first, fresh] = nameLines.emplace(joint, name.line); !fresh) {
+      doc.fail(name, "joint " + quoted(joint) + " appears twice (first at line " + std::to_string(first->second) + ")");
     }
+    out.values.emplace(joint, value);
     out.lines[joint] = position.line;
   }
   return out;
-}
-
-std::string readWholeFile(const std::string& path, const std::string& what) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": " + what + " does not exist");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a " + what);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the " + what);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the " + what);
-  return buffer.str();
 }
 
 }  // namespace adsd::planner::yaml

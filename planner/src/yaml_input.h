@@ -94,10 +94,6 @@ struct JointValues {
 };
 JointValues jointState(const Document& doc, const Field& jointState);
 
-/// \brief The whole of the file at \p path; a missing file, a directory or an unreadable file is
-/// an InputError naming it as \p what ("scene file").
-std::string readWholeFile(const std::string& path, const std::string& what);
-
 /// Largest |coordinate| or length accepted in a scene (metres): 1e6 m is far beyond any robot's
 /// workspace, and keeps every transformed vertex far inside adsd::Mesh's limit (1e75), so that a
 /// bad number is reported here with its line rather than by the mesh without one.

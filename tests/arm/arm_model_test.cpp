@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <random>
@@ -229,6 +230,8 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
                            joint("j2", "revolute", "b", "c") + joint("j3", "revolute", "c", "b")), "cycle"},
       {"loop.urdf", robot(link + "<link name=\"b\"/>" + joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "b", "a")), "cycle"},
       {"two_roots.urdf", robot(link + "<link name=\"b\"/>"), "root links"},
+      {"no_links.urdf", "<robot name=\"r\"/>", "no <link> elements"},
+      {"two_links_a.urdf", robot(link + link), "two links are named 'a'"},
       {"undefined_link.urdf", robot(link + joint("j", "revolute", "a", "zz")), "'zz'"},
       {"bad_limits.urdf", robot(link + "<link name=\"b\"/>" + "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/><limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/></joint>"), "joint 'j'"},
   };
@@ -245,6 +248,164 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
     }
   }
   EXPECT_THROW(readUrdf(dir.path("absent.urdf")), InputError);
+}
+
+// urdfdom logs and drops a <collision> element it cannot read, and reads on: the link went
+// unchecked for collisions with exit 0 (adversarial sweep). Each is refused, naming the link's line.
+TEST(ArmModel, CollisionElementsUrdfdomCannotReadAreRefused) {
+  test::ScratchDir dir;
+  const auto robot = [](const std::string& collision) {
+    return "<robot name=\"r\">\n<link name=\"a\">\n"
+           "<collision><geometry><box size=\"1 1 1\"/></geometry></collision>\n" +
+           collision + "\n</link>\n</robot>\n";
+  };
+  const std::vector<std::string> unreadable = {
+      R"(<collision><origin xyz="nan 0 0"/><geometry><box size="1 1 1"/></geometry></collision>)",
+      R"(<collision><origin rpy="0 nan 0"/><geometry><box size="1 1 1"/></geometry></collision>)",
+      R"(<collision><geometry><box size="nan 1 1"/></geometry></collision>)",
+      R"(<collision><geometry><mesh filename="m.stl" scale="nan 1 1"/></geometry></collision>)",
+      R"(<collision><geometry><mesh filename="m.stl" scale="1 1"/></geometry></collision>)",
+      R"(<collision><geometry/></collision>)",
+  };
+  for (const std::string& collision : unreadable) {
+    const std::string path = dir.write("dropped.urdf", robot(collision));
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << collision << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ":2: link 'a': urdfdom read 1 of its 2 <collision> elements (its message "
+                                              "is above); refused rather than leave the link unchecked")
+          << collision;
+    }
+  }
+}
+
+// Collision geometry placed or scaled out of range, or scaled to nothing: named by the URDF, the
+// <collision> element's line and the field (was: the link alone, by Mesh: "l2: vertex 0 has
+// coordinate x = 1e+200"; the mesh file for a scale of 1e80; a scale of 0 accepted as a point).
+TEST(ArmModel, CollisionOriginAndMeshScaleOutOfRangeAreRefusedNamingTheField) {
+  test::ScratchDir dir;
+  dir.write("t.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                     "endloop\nendfacet\nendsolid t\n");
+  const auto robot = [](const std::string& inside) {
+    return "<robot name=\"r\">\n<link name=\"a\">\n<collision>" + inside + "</collision>\n</link>\n</robot>\n";
+  };
+  struct Case {
+    std::string collision, mustSay;
+  };
+  const std::vector<Case> cases = {
+      {R"(<origin xyz="1e200 0 0"/><geometry><box size="1 1 1"/></geometry>)", "<collision> <origin xyz> must be finite and within 1e75"},
+      {R"(<origin xyz="1e75 0 0"/><geometry><box size="1e70 1 1"/></geometry>)", "the collision geometry reaches"},
+      {R"(<geometry><mesh filename="t.stl" scale="0 1 1"/></geometry>)", "<mesh scale> must be finite"},
+      {R"(<geometry><mesh filename="t.stl" scale="1 1e-320 1"/></geometry>)", "<mesh scale> must be finite"},
+      {R"(<geometry><mesh filename="t.stl" scale="1e80 1 1"/></geometry>)", "<mesh scale> (1e+80, 1, 1) takes a vertex beyond 1e75"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = dir.write("out_of_range.urdf", robot(c.collision));
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << c.collision << ": no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(path + ":3: link 'a': ", 0), 0u) << what;
+      EXPECT_NE(what.find(c.mustSay), std::string::npos) << what;
+    }
+  }
+  // A mirroring scale is kept: left and right arms share one mesh.
+  const ArmModel mirrored = readUrdf(dir.write("mirrored.urdf", robot(R"(<geometry><mesh filename="t.stl" scale="1 -1 1"/></geometry>)")));
+  EXPECT_TRUE(mirrored.links[0].collision->bounds().min().isApprox(Vec3(0, -1, 0)));
+}
+
+// A joint origin beyond 1e75 was accepted; limits of +-1e308 overflowed the range, so that every
+// state came out invalid ("not solved"). Refused, naming the URDF, the joint's line and the field.
+TEST(ArmModel, JointOriginAndLimitsOutOfRangeAreRefusedNamingTheJoint) {
+  test::ScratchDir dir;
+  const auto robot = [](const std::string& origin, const std::string& limit) {
+    return "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n"
+           "<joint name=\"j\" type=\"prismatic\">\n<parent link=\"a\"/><child link=\"b\"/>\n" +
+           origin + "<axis xyz=\"1 0 0\"/>\n" + limit + "\n</joint>\n</robot>\n";
+  };
+  const std::string limit = R"(<limit lower="-1" upper="1" effort="1" velocity="1"/>)";
+  struct Case {
+    std::string text, mustSay;
+  };
+  const std::vector<Case> cases = {
+      {robot(R"(<origin xyz="1e100 0 0"/>)", limit), "<origin xyz> must be finite and within 1e75, got (1e+100, 0, 0)"},
+      {robot("", R"(<limit lower="-1e308" upper="1e308" effort="1" velocity="1"/>)"),
+       "<limit lower= upper=> must be finite, within 1e75, with lower <= upper, got [-1e+308, 1e+308]"},
+      {robot("", R"(<limit lower="0" upper="1e76" effort="1" velocity="1"/>)"),
+       "<limit lower= upper=> must be finite, within 1e75, with lower <= upper, got [0, 1e+76]"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = dir.write("joint.urdf", c.text);
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << c.text << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ":4: joint 'j': " + c.mustSay);
+    }
+  }
+  EXPECT_EQ(readUrdf(dir.write("fine.urdf", robot(R"(<origin xyz="1e6 0 0"/>)", limit))).joints[0].upper, 1.0);
+}
+
+// TinyXML parses an element by a recursive call: a deep enough file overflowed the stack (SIGSEGV,
+// adversarial sweep). Refused first, naming the file; markup inside comments, CDATA and attribute
+// values, and self-closing elements, do not count as nesting.
+TEST(ArmModel, XmlNestedTooDeeplyIsRefusedBeforeParsing) {
+  test::ScratchDir dir;
+  std::string deep;
+  for (int i = 0; i < 200000; ++i) deep += "<z>";
+  for (int i = 0; i < 200000; ++i) deep += "</z>";
+  const std::string urdf = dir.write("deep.urdf", "<robot name=\"x\">\n<link name=\"a\"/>" + deep + "</robot>");
+  try {
+    readUrdf(urdf);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(urdf + ":2: elements nested more than 500 deep", 0), 0u) << e.what();
+  }
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  ArmCollisionPairs pairs(m);
+  const std::string srdf = dir.write("deep.srdf", "<robot name=\"slider_arm\">" + deep + "</robot>");
+  try {
+    disablePairsFromSrdf(m, srdf, pairs);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(srdf + ":1: elements nested more than 500 deep", 0), 0u) << e.what();
+  }
+
+  std::string notNesting = "<!-- ";
+  for (int i = 0; i < 600; ++i) notNesting += "<z>";
+  notNesting += " --><![CDATA[";
+  for (int i = 0; i < 600; ++i) notNesting += "<z>";
+  notNesting += "]]>";
+  for (int i = 0; i < 600; ++i) notNesting += "<z a=\"/><y>\"/>";
+  const ArmModel shallow = readUrdf(dir.write("shallow.urdf", "<?xml version=\"1.0\"?><robot name=\"x\">" + notNesting +
+                                                                 "<link name=\"a\"/></robot>"));
+  EXPECT_EQ(shallow.links.size(), 1u);
+}
+
+// TinyXML reports row 0 where it does not know the place (an empty file, one cut off): the line is
+// left out then, and given where it is known (was ":0:" for both).
+TEST(ArmModel, XmlErrorsGiveTheLineWhenTinyXmlKnowsIt) {
+  test::ScratchDir dir;
+  const auto errorOf = [](const std::function<void()>& read) {
+    try {
+      read();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string empty = dir.write("empty.urdf", "");
+  EXPECT_EQ(errorOf([&] { readUrdf(empty); }), empty + ": not XML: Error document empty.");
+  const std::string badEnd = dir.write("bad_end.urdf", "<robot name=\"r\">\n<link name=\"a\">\n</robot>\n");
+  EXPECT_EQ(errorOf([&] { readUrdf(badEnd); }).rfind(badEnd + ":3: not XML: ", 0), 0u);
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  ArmCollisionPairs pairs(m);
+  const std::string emptySrdf = dir.write("empty.srdf", "\n\n");
+  EXPECT_EQ(errorOf([&] { disablePairsFromSrdf(m, emptySrdf, pairs); }), emptySrdf + ": not XML: Error document empty.");
+  const std::string cut = dir.write("cut.srdf", "<robot name=\"slider_arm\">\n<disable_collisions link1=\"a\"\n");
+  EXPECT_EQ(errorOf([&] { disablePairsFromSrdf(m, cut, pairs); }).rfind(cut + ":2: not XML: ", 0), 0u);
 }
 
 TEST(ArmModel, MeshScaleAndFileUrisAndPackageSearchPath) {

@@ -247,6 +247,14 @@ TEST(ArmPlanCommand, MissingRequestFileNamesTheCfgLine) {
   expectRefused(cfg, dir, cfg.string() + ":5: key 'problem.request'", "request file");
 }
 
+// A directory was reported as a file that "does not exist".
+TEST(ArmPlanCommand, RequestThatIsADirectoryIsNamedAsOne) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const fs::path cfg = writeProblem(dir, "", dir.string());
+  expectRefused(cfg, dir, cfg.string() + ":5: key 'problem.request'", "request file '" + dir.string() + "' is a directory");
+}
+
 TEST(ArmPlanCommand, StartInCollisionNamesTheRequestLine) {
   SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
   const fs::path dir = workDirectory();

@@ -62,7 +62,8 @@ std::string withLine(int line, const std::string& replacement) {
 
 TEST(MotionPlanRequestYamlErrors, StartNamesAndPositionsOfDifferentLengths) {
   EXPECT_ERROR(withLine(9, "    position: [0.1, -0.2]"), ":9:", "2 positions for 3 joint names");
-  EXPECT_ERROR(withLine(8, "    name: [a, b, a]"), ":8:", "joint 'a' appears twice");
+  // The first name's line (was its position's: "first at line 9").
+  EXPECT_ERROR(withLine(8, "    name: [a, b, a]"), ":8:", "joint 'a' appears twice (first at line 8)");
 }
 
 TEST(MotionPlanRequestYamlErrors, MissingFieldsWrongTypesAndBadNumbers) {
@@ -73,6 +74,10 @@ TEST(MotionPlanRequestYamlErrors, MissingFieldsWrongTypesAndBadNumbers) {
   EXPECT_ERROR(withLine(13, "        position: 1,5"), ":13:", "expected a finite number, got '1,5'");
   EXPECT_ERROR(withLine(14, "        tolerance_above: -0.001"), ":14:", "a tolerance must be >= 0");
   EXPECT_ERROR(withLine(4, "allowed_planning_time: 0"), ":4:", "must be > 0");
+  // As the .cfg reader's time_limit: 1e20 overflowed OMPL's deadline ("not solved" at once).
+  EXPECT_ERROR(withLine(4, "allowed_planning_time: 1e20"), ":4:",
+               "field 'allowed_planning_time': '1e20' seconds is longer than the clock can count (at most 1e8)");
+  EXPECT_EQ(parseMotionPlanRequestYaml(withLine(4, "allowed_planning_time: 1e8"), "r.yaml").allowedPlanningTime, 1e8);
   EXPECT_ERROR("group_name: g\nstart_state: {joint_state: {name: [a], position: [0]}}\ngoal_constraints:\n"
                "  - joint_constraints: []\n",
                ":4:", "no joint constraints");
@@ -83,6 +88,14 @@ TEST(MotionPlanRequestYamlErrors, MissingFieldsWrongTypesAndBadNumbers) {
                "  - position_constraints: [{link_name: tool}]\n",
                ":4:", "only joint constraints");
   EXPECT_ERROR("group_name: [g\n", ":", "not valid YAML");
+}
+
+// yaml-cpp keeps the first of two equal keys: a second group_name or position list was ignored.
+TEST(MotionPlanRequestYamlErrors, RepeatedKeyNamesItsLineAndTheFirst) {
+  EXPECT_ERROR(withLine(3, "group_name: other"), ":3:", "key 'group_name' appears twice in one map (first at line 2)");
+  EXPECT_ERROR(withLine(8, "    position: [1, 1, 1]"), ":9:", "key 'position' appears twice in one map (first at line 8)");
+  // The same key in different maps, and a key repeated through an alias, are fine.
+  EXPECT_NO_THROW(parseMotionPlanRequestYaml(withLine(7, "    header: &h {frame_id: world}\n    extra: *h"), "r.yaml"));
 }
 
 }  // namespace

@@ -220,6 +220,14 @@ TEST(PlanningSceneYamlErrors, RepeatedIdEmptyObjectPlanesAndMissingFile) {
   }
 }
 
+// yaml-cpp keeps the first of two equal keys: a second `primitives:` (a 100 m box) was ignored.
+TEST(PlanningSceneYamlErrors, RepeatedKeyNamesItsLineAndTheFirst) {
+  EXPECT_ERROR(withLine(19, "          orientation: {x: 0, y: 0, z: 0, w: 1}\n"
+                            "      primitives: [{type: box, dimensions: [100, 100, 100]}]"),
+               ":20:", "key 'primitives' appears twice in one map (first at line 14)");
+  EXPECT_ERROR(withLine(12, "        position: {x: 1, y: 0, x: 2}"), ":12:", "key 'x' appears twice in one map (first at line 12)");
+}
+
 TEST(PlanningSceneYamlErrors, AliasesCannotMultiplyTheWork) {
   // 40 objects, each with one 4-vertex mesh repeated 32 times by alias: about 45 000 values from
   // a text of 3 KB; refused instead of expanded.

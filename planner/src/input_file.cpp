@@ -1,0 +1,24 @@
+#include "input_file.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "adsd/error.h"
+
+namespace adsd::planner {
+
+std::string readInputFile(const std::string& path, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": " + what + " does not exist");
+  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a " + what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the " + what);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read the " + what);
+  return buffer.str();
+}
+
+}  // namespace adsd::planner

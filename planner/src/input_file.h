@@ -1,0 +1,14 @@
+#pragma once
+/// \file
+/// \brief Internal: the whole text of an input file the user names (URDF, SRDF, scene, request,
+/// problem), with one InputError for each way it can be missing. Not installed.
+
+#include <string>
+
+namespace adsd::planner {
+
+/// \brief The whole of the file at \p path; a missing file, a directory or an unreadable file is
+/// an InputError naming it as \p what ("scene file").
+std::string readInputFile(const std::string& path, const std::string& what);
+
+}  // namespace adsd::planner
