@@ -64,10 +64,11 @@ constexpr int kPlacementMarchSteps = 600;
 
 /// Brackets the outermost crossing of the target gap along B's approach line, for a drawing whose
 /// centres coinciding leave the meshes apart (a small mesh inside a large closed one: the dragon
-/// at the centre of a bunny 80 times its size). B comes in from \p hi, where the gap exceeds the
+/// at the centre of a bunny 60 times its size). B comes in from \p hi, where the gap exceeds the
 /// target, in steps of the gap's excess over the target: moving B by s changes the gap by at most
-/// s, so no step passes a crossing. Steps are at least hi / 512, and bisection finishes from the
-/// first bracket. On success [lo, hi] holds a crossing with gap(lo) < target <= gap(hi); false
+/// s, so such a step passes no crossing. Steps are at least hi / 512 (one that long may pass a
+/// narrow dip below the target, and the crossing found is then not the outermost), and bisection
+/// finishes from the first bracket. On success [lo, hi] holds a crossing with gap(lo) < target <= gap(hi); false
 /// when the line never comes within the target.
 template <typename PlaceB>
 bool bracketFromOutside(const GapFunction& gap, const Pose& poseA, const PlaceB& placeB, double target, double& lo,

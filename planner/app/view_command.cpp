@@ -5,6 +5,7 @@
 // which is also what OMPL's PathGeometric::printAsMatrix prints. An arm problem's page
 // (arm_viewer_html.h) takes an arm's path file: a "# joints: ..." header and one line of joint
 // values per state. Exit status: 0 written, 2 bad input.
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -122,11 +123,19 @@ void readPathLines(const std::string& file,
   if (states == 0) throw InputError(file + ": no states (only comments or blank lines)");
 }
 
+/// How far beyond a bound, relative to the bounds' extent or magnitude, a path file's position may
+/// lie and be taken (clamped): OMPL's printAsMatrix rounds to six significant digits.
+constexpr double kPathBoundsSlack = 1e-5;
+
+/// The position bounds of \p si's rigid-body space.
+const ob::RealVectorBounds& positionBounds(const ob::SpaceInformation& si, RigidBodySpace space) {
+  return space == RigidBodySpace::se2 ? si.getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
+                                      : si.getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
+}
+
 /// The position bounds of \p si's rigid-body space, as "x in [a, b], y in [c, d]...".
 std::string boundsText(const ob::SpaceInformation& si, RigidBodySpace space) {
-  const ob::RealVectorBounds& bounds =
-      space == RigidBodySpace::se2 ? si.getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
-                                   : si.getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
+  const ob::RealVectorBounds& bounds = positionBounds(si, space);
   std::ostringstream text;
   for (std::size_t i = 0; i < bounds.low.size(); ++i) {
     text << (i ? ", " : "") << "xyz"[i] << " in [" << bounds.low[i] << ", " << bounds.high[i] << "]";
@@ -166,10 +175,18 @@ ompl::geometric::PathGeometric readPathFile(const std::string& file, const ob::S
       s->rotation().w = values[6] / norm;
     }
     // A state outside the problem's bounds is not one of its states (and one far outside would
-    // fail later, in a distance query that cannot name this line).
-    if (!si->satisfiesBounds(state.get())) {
-      throw InputError(where + "the state lies outside the problem's bounds (" + boundsText(*si, space) + ")");
+    // fail later, in a distance query that cannot name this line). OMPL's printAsMatrix writes
+    // six digits, which may round a state on a bound outward: within kPathBoundsSlack it is taken,
+    // clamped.
+    const ob::RealVectorBounds& bounds = positionBounds(*si, space);
+    for (std::size_t i = 0; i < bounds.low.size(); ++i) {
+      const double slack = kPathBoundsSlack * std::max({bounds.high[i] - bounds.low[i], std::abs(bounds.low[i]),
+                                                        std::abs(bounds.high[i])});
+      if (!(values[i] >= bounds.low[i] - slack && values[i] <= bounds.high[i] + slack)) {
+        throw InputError(where + "the state lies outside the problem's bounds (" + boundsText(*si, space) + ")");
+      }
     }
+    si->enforceBounds(state.get());
     path.append(state.get());
   };
   readPathLines(file, [](const std::string&, const std::string&) {}, onState);

@@ -12,6 +12,7 @@ stdout (no plan was made first). `adsd view` of a rigid problem's path file: a y
 state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
 no page is written.
 """
+import math
 import os
 import pathlib
 import subprocess
@@ -60,6 +61,19 @@ def main():
         r = run(adsd, ["view", office, "--path", turned, "--html", page], work)
         check(r.returncode == 0, f"view of yaws outside [-pi, pi]: exit {r.returncode} ({r.stderr.strip()})")
         check(os.path.isfile(page), "view of yaws outside [-pi, pi]: no page written")
+        # The same turns written within [-pi, pi]: the same states, so the same clearance printed.
+        wrapped = os.path.join(work, "wrapped.path")
+        pathlib.Path(wrapped).write_text(f"-6 2.5 0\n0 0 {4 - 2 * math.pi!r}\n6 -2.5 {math.pi / 2!r}\n")
+        w = run(adsd, ["view", office, "--path", wrapped, "--html", os.path.join(work, "wrapped.html")], work)
+        clearance = [line for line in r.stdout.splitlines() if line.startswith("clearance")]
+        check(clearance and clearance == [line for line in w.stdout.splitlines() if line.startswith("clearance")],
+              f"yaws 4 and 4 - 2 pi printed different clearances:\n{r.stdout}\n{w.stdout}")
+
+        # printAsMatrix's six digits may round a state on a bound outward (x = 10 at x <= 10).
+        rounded = os.path.join(work, "rounded.path")
+        pathlib.Path(rounded).write_text("-6 2.5 0\n10.00001 -2.5 0\n")
+        r = run(adsd, ["view", office, "--path", rounded, "--html", os.path.join(work, "rounded.html")], work)
+        check(r.returncode == 0, f"view of a state rounded past a bound: exit {r.returncode} ({r.stderr.strip()})")
 
         outside = os.path.join(work, "outside.path")
         pathlib.Path(outside).write_text("-6 2.5 0\n1e150 0 0\n")

@@ -570,8 +570,24 @@ TEST(LoadMeshBadInput, PlyAndColladaOfAnyNameAreChecked) {
   // A zipped COLLADA: assimp would unzip it; nothing here can check what is inside first.
   const std::string zae = loadError(dir.write("scene.zae", std::string("PK\3\4", 4) + "scene.dae"));
   EXPECT_NE(zae.find("zipped COLLADA"), std::string::npos) << zae;
-  const std::string zip = loadError(dir.write("archive", std::string("PK\3\4", 4) + "manifest.xml"));
+  // A zip's records as its format lays them out: a member's local header (name length at byte 26,
+  // name at 30) and its central directory entry (28, 46); sizes and checksums left 0.
+  auto zipRecord = [](const char* signature, std::size_t lengthAt, const std::string& name) {
+    std::string record(signature, 4);
+    record.resize(lengthAt + 2 + (lengthAt == 26 ? 2 : 16), '\0');
+    record[lengthAt] = static_cast<char>(name.size() & 0xFF);
+    record[lengthAt + 1] = static_cast<char>(name.size() >> 8);
+    return record + name;
+  };
+  const std::string zip = loadError(dir.write("archive", zipRecord("PK\3\4", 26, "manifest.xml")));
   EXPECT_NE(zip.find("zipped COLLADA"), std::string::npos) << zip;
+  // assimp finds a zip by the directory at its end, so bytes before it (a self-extracting
+  // archive) do not hide it, whatever the file's name.
+  const std::string prefixed =
+      loadError(dir.write("setup.bin", "MZ not a zip yet" + zipRecord("PK\3\4", 26, "models/Scene.DAE")));
+  EXPECT_NE(prefixed.find("zipped COLLADA"), std::string::npos) << prefixed;
+  const std::string central = loadError(dir.write("central.bin", "junk" + zipRecord("PK\1\2", 28, "a/scene.dae")));
+  EXPECT_NE(central.find("zipped COLLADA"), std::string::npos) << central;
 }
 
 // PLY, OFF and ASCII STL files of any name are read by our readers, exactly (assimp would store

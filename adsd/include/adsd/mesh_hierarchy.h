@@ -34,7 +34,8 @@ struct OrientedBox {
 
 class MeshHierarchy {
  public:
-  /// Leaves hold at most this many triangles: below it a GJK run costs more than direct tests.
+  /// Leaves hold at most this many triangles: between two nodes this small a GJK run costs more
+  /// than direct tests (a leaf may still meet a larger node by GJK, tree_traversal.cpp).
   static constexpr std::uint32_t kLeafTriangles = 4;
   /// Splits between whole components (Node::span) happen only this near the root;
   /// deeper, every split halves a node's triangles (the median).

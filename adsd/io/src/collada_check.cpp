@@ -52,6 +52,41 @@ int lineOf(std::string_view text, std::size_t at) {
   return line;
 }
 
+/// Whether \p bytes are a zip archive holding a COLLADA file: a member named *.dae or
+/// manifest.xml (a .zae's). assimp tries every file as a zip, whatever its name, and its zip
+/// library finds an archive by the directory at its end, so a zip with other bytes before it
+/// (a self-extracting one) is one too: both the members' local headers and the central
+/// directory's entries are searched, each naming its member uncompressed.
+bool zipHoldsCollada(std::string_view bytes) {
+  auto little16 = [&](std::size_t at) {
+    return static_cast<std::size_t>(static_cast<unsigned char>(bytes[at])) |
+           static_cast<std::size_t>(static_cast<unsigned char>(bytes[at + 1])) << 8;
+  };
+  auto namesCollada = [&](std::size_t nameAt, std::size_t length) {
+    if (nameAt + length > bytes.size()) return false;
+    std::string name(bytes.substr(nameAt, length));
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+    auto endsWith = [&](std::string_view tail) {
+      return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    return endsWith(".dae") || endsWith("manifest.xml");
+  };
+  // {signature, offset of the name's length, offset of the name} of a local header and of a
+  // central directory entry.
+  struct Record {
+    std::string_view signature;
+    std::size_t lengthAt, nameAt;
+  };
+  const Record records[] = {{std::string_view("PK\3\4", 4), 26, 30}, {std::string_view("PK\1\2", 4), 28, 46}};
+  for (const Record& r : records) {
+    for (std::size_t at = bytes.find(r.signature); at != std::string_view::npos; at = bytes.find(r.signature, at + 1)) {
+      if (at + r.nameAt > bytes.size()) break;
+      if (namesCollada(at + r.nameAt, little16(at + r.lengthAt))) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 bool readAsCollada(const std::string& path, std::string_view bytes) {
@@ -67,12 +102,7 @@ bool readAsCollada(const std::string& path, std::string_view bytes) {
 }
 
 void refuseZippedCollada(const std::string& path, std::string_view bytes) {
-  // A zip's local file headers hold the member names uncompressed.
-  const bool zip = bytes.substr(0, 4) == std::string_view("PK\3\4", 4);
-  std::string lower(bytes.size(), '\0');
-  if (zip) std::transform(bytes.begin(), bytes.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (lowerCaseExtension(path) == ".zae" ||
-      (zip && (lower.find("manifest.xml") != std::string::npos || lower.find(".dae") != std::string::npos))) {
+  if (lowerCaseExtension(path) == ".zae" || zipHoldsCollada(bytes)) {
     throw InputError(path + ": zipped COLLADA (.zae) is not read: its index lists cannot be checked before assimp "
                             "reads them (unzip it and load the .dae)");
   }

@@ -216,10 +216,13 @@ bool startsWithOffKeyword(std::string_view text) {
   LineScanner lines(text);
   std::string_view line;
   while (lines.next(line)) {
-    const std::vector<std::string_view> tokens = splitWhitespace(withoutComment(line));
-    if (tokens.empty()) continue;
+    // The first word only: a binary file of another format may be one line of megabytes.
+    const std::string_view content = withoutComment(line);
+    const std::size_t begin = content.find_first_not_of(" \t\r\n\f\v");
+    if (begin == std::string_view::npos) continue;
+    const std::size_t end = content.find_first_of(" \t\r\n\f\v", begin);
     bool plain = true;
-    return isOffKeyword(tokens[0], plain);
+    return isOffKeyword(content.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin), plain);
   }
   return false;
 }
