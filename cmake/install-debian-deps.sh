@@ -8,6 +8,8 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libassimp-dev
+  # zlib: zipped COLLADA (.zae) is unzipped and checked before assimp reads it.
+  zlib1g-dev
   libompl-dev ompl-demos
   # OMPL's CMake config names these libraries without depending on their -dev packages.
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev libboost-program-options-dev

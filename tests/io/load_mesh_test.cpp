@@ -2,6 +2,7 @@
 // mesh entry of the bad-input catalogue (issue 7, item 3).
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <array>
@@ -493,6 +494,12 @@ TEST(LoadMeshBadInput, PlyThatAssimpWouldHangOrAbortOn) {
   EXPECT_NE(word.find("word.ply:11: vertex 1: 'x' is not a number"), std::string::npos) << word;
 }
 
+/// An ASCII PLY header, without its end_header line: three vertices and two faces (the tests
+/// below give the second face no corners).
+const std::string kThreeVerticesTwoFacesPly =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 2\nproperty list uchar int vertex_indices\n";
+
 // Fuzz findings (tests/fuzz/regressions/mesh_loader/ply_*): a vertical tab where the newline after
 // end_header belongs made assimp loop forever (no data after it) or read past its buffer (SEGV);
 // a face with no corners made its triangulation abort the process.
@@ -503,9 +510,7 @@ TEST(LoadMeshBadInput, PlyHeaderControlCharactersAndFacesWithoutCorners) {
   const std::string segv =
       loadError(dir.write("tab2.ply", std::string("ply\nformat binary_big_endian 1.0\nend_header\v\0\0\0\3", 48)));
   EXPECT_NE(segv.find("tab2.ply:3: control character 0x0b"), std::string::npos) << segv;
-  const std::string header =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const std::string header = kThreeVerticesTwoFacesPly + "end_header\n0 0 0\n1 0 0\n0 1 0\n";
   const std::string ascii = loadError(dir.write("empty_face.ply", header + "3 0 1 2\n0\n"));
   EXPECT_NE(ascii.find("empty_face.ply:14: face 1: a face with no corners"), std::string::npos) << ascii;
   // The same in binary: a face whose corner count is 0.
@@ -539,6 +544,44 @@ TEST(LoadMeshBadInput, ColladaIndexListThatAssimpWouldReadForever) {
   EXPECT_EQ(loadMesh(dir.write("fine.dae", fine)).triangleCount(), 1u);
 }
 
+/// A zip archive of one member, \p name holding \p contents, laid out as archivers write one: its
+/// local header and data, one central directory entry, and the end record (little-endian fields).
+/// Stored, or deflated (raw, as zip members are) with zlib.
+std::string zipOf(const std::string& name, const std::string& contents, bool deflated) {
+  std::string data = contents;
+  if (deflated) {
+    z_stream stream{};
+    EXPECT_EQ(deflateInit2(&stream, Z_BEST_COMPRESSION, Z_DEFLATED, -MAX_WBITS, 8, Z_DEFAULT_STRATEGY), Z_OK);
+    data.assign(deflateBound(&stream, contents.size()), '\0');
+    stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(contents.data()));
+    stream.avail_in = static_cast<uInt>(contents.size());
+    stream.next_out = reinterpret_cast<Bytef*>(data.data());
+    stream.avail_out = static_cast<uInt>(data.size());
+    EXPECT_EQ(deflate(&stream, Z_FINISH), Z_STREAM_END);
+    data.resize(stream.total_out);
+    deflateEnd(&stream);
+  }
+  auto field = [](std::uint32_t value, int bytes) {
+    std::string out;
+    for (int i = 0; i < bytes; ++i) out += static_cast<char>(value >> (8 * i) & 0xFF);
+    return out;
+  };
+  const std::uint32_t crc = static_cast<std::uint32_t>(
+      crc32(0, reinterpret_cast<const Bytef*>(contents.data()), static_cast<uInt>(contents.size())));
+  const std::string method = field(deflated ? 8 : 0, 2);
+  const std::string sizes = field(crc, 4) + field(static_cast<std::uint32_t>(data.size()), 4) +
+                            field(static_cast<std::uint32_t>(contents.size()), 4) +
+                            field(static_cast<std::uint32_t>(name.size()), 2) + field(0, 2);
+  const std::string local = std::string("PK\3\4", 4) + field(20, 2) + field(0, 2) + method + field(0, 4) + sizes;
+  const std::string entry = std::string("PK\1\2", 4) + field(20, 2) + field(20, 2) + field(0, 2) + method + field(0, 4) +
+                            sizes + field(0, 2) + field(0, 2) + field(0, 2) + field(0, 4) + field(0, 4) + name;
+  const std::string members = local + name + data;
+  const std::string end = std::string("PK\5\6", 4) + field(0, 2) + field(0, 2) + field(1, 2) + field(1, 2) +
+                          field(static_cast<std::uint32_t>(entry.size()), 4) +
+                          field(static_cast<std::uint32_t>(members.size()), 4) + field(0, 2);
+  return members + entry + end;
+}
+
 // Assimp goes by content when it does not know a file's extension: a PLY file called anything but
 // .ply reached its PLY reader past our checks (SEGV, a hang, an abort), and a COLLADA file not
 // called .dae reached its index-list reader (12.6 GB, then bad_alloc). Content decides now.
@@ -547,9 +590,7 @@ TEST(LoadMeshBadInput, PlyAndColladaOfAnyNameAreChecked) {
   const std::string segv =
       loadError(dir.write("tab_segv", std::string("ply\nformat binary_big_endian 1.0\nend_header\v\0\0\0\3", 48)));
   EXPECT_NE(segv.find("tab_segv:3: control character 0x0b"), std::string::npos) << segv;
-  const std::string header =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 2\nproperty list uchar int vertex_indices\n";
+  const std::string header = kThreeVerticesTwoFacesPly;
   const std::string noEnd = loadError(dir.write("no_end.mdl", header));
   EXPECT_NE(noEnd.find("no end_header"), std::string::npos) << noEnd;
   const std::string emptyFace = loadError(dir.write("empty_face.txt", header + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n"));
@@ -567,7 +608,7 @@ TEST(LoadMeshBadInput, PlyAndColladaOfAnyNameAreChecked) {
   for (const char c : dae) utf16 += std::string(1, c) + '\0';
   const std::string wide = loadError(dir.write("wide", utf16));
   EXPECT_NE(wide.find("wide:16: the index list <p> holds"), std::string::npos) << wide;
-  // A zipped COLLADA: assimp would unzip it; nothing here can check what is inside first.
+  // A zipped COLLADA whose archive has no directory to find its members by: not read.
   const std::string zae = loadError(dir.write("scene.zae", std::string("PK\3\4", 4) + "scene.dae"));
   EXPECT_NE(zae.find("zipped COLLADA"), std::string::npos) << zae;
   // A zip's records as its format lays them out: a member's local header (name length at byte 26,
@@ -588,6 +629,24 @@ TEST(LoadMeshBadInput, PlyAndColladaOfAnyNameAreChecked) {
   EXPECT_NE(prefixed.find("zipped COLLADA"), std::string::npos) << prefixed;
   const std::string central = loadError(dir.write("central.bin", "junk" + zipRecord("PK\1\2", 28, "a/scene.dae")));
   EXPECT_NE(central.find("zipped COLLADA"), std::string::npos) << central;
+
+  // A real zip of the COLLADA (stored, and deflated as archivers write it): unzipped and checked,
+  // the bad index list named by member and line; the good one reads as the .dae does.
+  const std::string good = colladaWithNodes(R"(<node id="n" name="n"><instance_geometry url="#tri"/></node>)");
+  for (const bool deflated : {false, true}) {
+    SCOPED_TRACE(deflated ? "deflated" : "stored");
+    const std::string bad = loadError(dir.write("bad.zae", zipOf("scene.dae", dae, deflated)));
+    EXPECT_NE(bad.find("bad.zae (scene.dae):16: the index list <p> holds"), std::string::npos) << bad;
+    const std::string disguised = loadError(dir.write("model.bin", "MZ" + zipOf("Model.DAE", dae, deflated)));
+    EXPECT_NE(disguised.find("model.bin (Model.DAE):16: the index list <p> holds"), std::string::npos) << disguised;
+    const Mesh fine = io::loadMesh(dir.write("fine.zae", zipOf("scene.dae", good, deflated)));
+    EXPECT_EQ(fine.triangleCount(), io::loadMesh(dir.write("fine.dae", good)).triangleCount());
+  }
+  // A damaged member: assimp's unzip aborted the process on its checksum (fuzzing duck.zae).
+  std::string damaged = zipOf("scene.dae", good, false);
+  damaged[30 + 9 + 100] ^= 0x01;  // a byte of the stored member (after the 30-byte header and its name)
+  const std::string crc = loadError(dir.write("damaged.zae", damaged));
+  EXPECT_NE(crc.find("damaged.zae: zip member 'scene.dae' does not match its CRC-32 checksum"), std::string::npos) << crc;
 }
 
 // PLY, OFF and ASCII STL files of any name are read by our readers, exactly (assimp would store

@@ -20,6 +20,7 @@
 #include "adsd/error.h"
 #include "file_checks.h"
 #include "text_scan.h"
+#include "zip_archive.h"
 
 namespace adsd::io::detail {
 
@@ -101,10 +102,23 @@ bool readAsCollada(const std::string& path, std::string_view bytes) {
   return false;
 }
 
-void refuseZippedCollada(const std::string& path, std::string_view bytes) {
-  if (lowerCaseExtension(path) == ".zae" || zipHoldsCollada(bytes)) {
-    throw InputError(path + ": zipped COLLADA (.zae) is not read: its index lists cannot be checked before assimp "
-                            "reads them (unzip it and load the .dae)");
+void checkZippedCollada(const std::string& path, std::string_view bytes) {
+  if (lowerCaseExtension(path) != ".zae" && !zipHoldsCollada(bytes)) return;
+  auto endsWith = [](std::string_view name, std::string_view tail) {
+    return name.size() >= tail.size() && std::equal(name.end() - tail.size(), name.end(), tail.begin(), [](char a, char b) {
+             return std::tolower(static_cast<unsigned char>(a)) == b;
+           });
+  };
+  // Every member is read back and checked against its checksum, as assimp reads textures from the
+  // archive too and aborts on a damaged one; the COLLADA members (every .dae, not only the one
+  // manifest.xml names: without a manifest assimp takes the first) have their index lists checked.
+  auto everyMember = [](std::string_view) { return true; };
+  const bool read = forEachZipMember(path, bytes, everyMember, [&](const std::string& name, std::string_view text) {
+    if (endsWith(name, ".dae")) requireIntegerIndexLists(path + " (" + name + ")", text);
+  });
+  if (!read) {
+    throw InputError(path + ": zipped COLLADA without a central directory: the COLLADA inside cannot be checked "
+                            "before assimp reads it");
   }
 }
 

@@ -51,10 +51,11 @@ bool startsWithOffKeyword(std::string_view text);
 /// looks for in a file of any other name.
 bool readAsCollada(const std::string& path, std::string_view bytes);
 
-/// \brief Throws InputError naming \p path for a zipped COLLADA archive (.zae, or a zip holding a
-/// manifest.xml or a .dae): assimp would unzip and read the .dae inside, which
-/// requireIntegerIndexLists cannot check first.
-void refuseZippedCollada(const std::string& path, std::string_view bytes);
+/// \brief For a zipped COLLADA archive (.zae, or a zip of any name holding a manifest.xml or a
+/// .dae, which assimp unzips and reads): every .dae member unzipped (zip_archive.h) and checked
+/// by requireIntegerIndexLists, its errors naming "PATH (MEMBER):LINE". Throws InputError naming
+/// \p path for an archive whose members cannot be read back to be checked.
+void checkZippedCollada(const std::string& path, std::string_view bytes);
 
 /// \brief COLLADA: every `<p>` index list holds integers and whitespace only, up to its `</p>`;
 /// throws InputError "PATH:LINE: ..." otherwise (assimp would read such a list forever, growing

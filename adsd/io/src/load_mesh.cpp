@@ -297,7 +297,7 @@ Mesh loadMeshUnguarded(const std::string& path) {
       case detail::MeshReader::assimp: break;
     }
     // Assimp reads COLLADA by content whatever the file's name, so the check goes by content too.
-    detail::refuseZippedCollada(path, bytes);
+    detail::checkZippedCollada(path, bytes);
     if (detail::readAsCollada(path, bytes)) detail::requireIntegerIndexLists(path, bytes);
   }  // the bytes are freed before assimp reads the file itself (it may need files beside it)
 

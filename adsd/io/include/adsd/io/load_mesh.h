@@ -13,8 +13,9 @@ namespace adsd::io {
 ///
 /// The reader: .obj, .off, .ply and .stl (any case) go to ours; a file of any other name goes by
 /// its first word ("ply", an OFF keyword, "solid"), else to assimp. Before assimp reads a file,
-/// COLLADA (named .dae or holding "<COLLADA") has its index lists checked and zipped COLLADA
-/// (.zae) is refused, so that no malformed file reaches assimp's readers we know to crash or hang.
+/// COLLADA (named .dae or holding "<COLLADA", or zipped: .zae or a zip holding a .dae, unzipped
+/// with zlib first) has its index lists checked, so that no malformed file reaches assimp's
+/// readers we know to crash or hang.
 ///
 /// Precision, by format (docs/numerics.md has the measurement):
 /// - OBJ, OFF, ASCII PLY, ASCII STL: every coordinate as the double nearest its decimal text
