@@ -29,6 +29,12 @@ std::optional<std::string> Arguments::outputFile(const std::string& name) const 
   if (file->empty()) throw UsageError(option + "expected a file name, got ''");
   std::error_code ec;
   if (std::filesystem::is_directory(*file, ec)) throw UsageError(option + "'" + *file + "' is a directory, not a file");
+  // The file is written through a temporary renamed over it: a device or a pipe there (/dev/null,
+  // /dev/full) would be replaced by a plain file, and a write that should fail would seem done.
+  const std::filesystem::file_status status = std::filesystem::status(*file, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw UsageError(option + "'" + *file + "' is a device, a pipe or a socket, not a file to write");
+  }
   std::filesystem::path directory = std::filesystem::path(*file).parent_path();
   if (directory.empty()) directory = ".";
   if (!std::filesystem::is_directory(directory, ec)) {

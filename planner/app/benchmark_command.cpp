@@ -559,7 +559,11 @@ bool setQuietly(ob::Planner& planner, const Setting& s) {
 
 /// A planner of \p entry on \p si with the entry's parameters; warnings only when \p warn (they are
 /// the same for every combination).
-ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, const ob::SpaceInformationPtr& si, bool warn) {
+ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, ompl::geometric::SimpleSetup& ss, bool warn) {
+  if (const auto conflict = plannerObjectiveConflict(entry.name, ss.getOptimizationObjective().get())) {
+    throw InputError(entry.location.describe() + ": " + *conflict);
+  }
+  const ob::SpaceInformationPtr& si = ss.getSpaceInformation();
   ob::PlannerPtr planner = makePlanner(entry.name, si);
   if (!planner) throw InputError(entry.location.describe() + ": no planner named '" + entry.name + "'");
   for (const Setting& s : entry.parameters) {
@@ -715,7 +719,7 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, cons
       c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), input.name);
       Combination* self = c.get();
       for (const PlannerEntry& entry : entries) {
-        ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->spaceInformation(), first);
+        ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->setup(), first);
         const std::string label = (entry.label != entry.name ? entry.label : planner->getName()) + " [" + c->label() + "]";
         c->benchmark->addPlanner(
             std::make_shared<MeasuredPlanner>(planner, label, [self](double seconds) { captureQueries(*self, seconds); }));

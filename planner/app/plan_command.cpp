@@ -124,9 +124,13 @@ const char* name(CheckerKind k) { return k == CheckerKind::adsd ? "adsd" : "fcl"
 const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" : "certified"; }
 const char* name(ObjectiveKind k) { return k == ObjectiveKind::length ? "length" : "max_min_clearance"; }
 
-/// The planner named \p chosen, or an InputError listing the known names.
-ompl::base::PlannerPtr makeNamedPlanner(const std::string& chosen, const ompl::base::SpaceInformationPtr& si) {
-  ompl::base::PlannerPtr planner = makePlanner(chosen, si);
+/// The planner named \p chosen for \p ss's objective, or an InputError listing the known names
+/// (or saying why this planner cannot take that objective).
+ompl::base::PlannerPtr makeNamedPlanner(const std::string& chosen, ompl::geometric::SimpleSetup& ss) {
+  if (const auto conflict = plannerObjectiveConflict(chosen, ss.getOptimizationObjective().get())) {
+    throw InputError("--planner: " + *conflict);
+  }
+  ompl::base::PlannerPtr planner = makePlanner(chosen, ss.getSpaceInformation());
   if (!planner) {
     std::string known;
     for (const std::string& n : knownPlannerNames()) known += (known.empty() ? "" : ", ") + n;
@@ -154,7 +158,7 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   } else {
     chosen = "rrtconnect";
   }
-  ompl::base::PlannerPtr planner = makeNamedPlanner(chosen, problem.spaceInformation());
+  ompl::base::PlannerPtr planner = makeNamedPlanner(chosen, problem.setup());
   if (entry != nullptr) {
     for (const Setting& s : entry->parameters) {
       if (!planner->params().hasParam(s.key)) {
@@ -233,7 +237,7 @@ int planArm(const PlanArguments& a) {
 
   const std::string plannerName = a.planner.value_or("rrtconnect");
   ompl::geometric::SimpleSetup& ss = problem.setup();
-  ss.setPlanner(makeNamedPlanner(plannerName, problem.spaceInformation()));
+  ss.setPlanner(makeNamedPlanner(plannerName, ss));
   const double seconds = a.seconds.value_or(problem.allowedPlanningTime().value_or(10.0));
 
   ArmMotionCounts certified;

@@ -1,5 +1,7 @@
 #include "adsd/planner/planner_registry.h"
 
+#include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
+
 #include <algorithm>
 #include <functional>
 #include <map>
@@ -105,6 +107,16 @@ bool isOptimizingPlanner(const std::string& name) {
                                                       "lazyprmstar", "lbtrrt", "bitstar", "fmt", "bfmt",
                                                       "sst", "cforest", "anytimepathshortening", "spars", "spars2"};
   return std::find(optimizing.begin(), optimizing.end(), name) != optimizing.end();
+}
+
+std::optional<std::string> plannerObjectiveConflict(const std::string& name,
+                                                    const ompl::base::OptimizationObjective* objective) {
+  const bool clearance = dynamic_cast<const ompl::base::MaximizeMinClearanceObjective*>(objective) != nullptr;
+  if (clearance && (name == "fmt" || name == "bfmt")) {
+    return "planner " + name + " cannot plan for the clearance objective (OMPL's FMT* and BFMT* crash with it); " +
+           "use rrtstar, informedrrtstar, bitstar or prmstar";
+  }
+  return std::nullopt;
 }
 
 }  // namespace adsd::planner

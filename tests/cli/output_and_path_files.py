@@ -5,6 +5,7 @@
 
 OFFICE_CFG: the shipped office problem as the build writes it (its meshes beside it).
 
+`adsd plan --planner fmt|bfmt --objective clearance` (OMPL's FMT* crashed with it) is refused.
 `adsd plan --path/--html` and `adsd view --html` naming an empty name, a directory or a file in a
 directory that does not exist: exit status 2 with one line on stderr naming the option, nothing on
 stdout (no plan was made first). `adsd view` of a rigid problem's path file: a yaw outside
@@ -54,6 +55,14 @@ def main():
                            f"adsd {command}: error: {option}: expected a file name, got ''")
             expect_refused(adsd, [command, office, option, work] + extra, work,
                            f"adsd {command}: error: {option}: '{work}' is a directory, not a file")
+            # A device would be replaced by a plain file (the write goes through a rename).
+            expect_refused(adsd, [command, office, option, "/dev/null"] + extra, work,
+                           f"adsd {command}: error: {option}: '/dev/null' is a device, a pipe or a socket")
+
+        # OMPL's FMT* and BFMT* crashed (a segmentation fault) with the clearance objective.
+        for planner in ("fmt", "bfmt"):
+            expect_refused(adsd, ["plan", office, "--planner", planner, "--objective", "clearance", "--time", "0.2"], work,
+                           f"adsd plan: error: --planner: planner {planner} cannot plan for the clearance objective")
 
         page = os.path.join(work, "page.html")
         turned = os.path.join(work, "turned.path")

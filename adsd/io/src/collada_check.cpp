@@ -103,20 +103,17 @@ bool readAsCollada(const std::string& path, std::string_view bytes) {
 }
 
 void checkZippedCollada(const std::string& path, std::string_view bytes) {
-  if (lowerCaseExtension(path) != ".zae" && !zipHoldsCollada(bytes)) return;
-  auto endsWith = [](std::string_view name, std::string_view tail) {
-    return name.size() >= tail.size() && std::equal(name.end() - tail.size(), name.end(), tail.begin(), [](char a, char b) {
-             return std::tolower(static_cast<unsigned char>(a)) == b;
-           });
-  };
-  // Every member is read back and checked against its checksum, as assimp reads textures from the
-  // archive too and aborts on a damaged one; the COLLADA members (every .dae, not only the one
-  // manifest.xml names: without a manifest assimp takes the first) have their index lists checked.
-  auto everyMember = [](std::string_view) { return true; };
-  const bool read = forEachZipMember(path, bytes, everyMember, [&](const std::string& name, std::string_view text) {
-    if (endsWith(name, ".dae")) requireIntegerIndexLists(path + " (" + name + ")", text);
-  });
-  if (!read) {
+  // Every member of any zip is read back and matched against its checksum: assimp opens every
+  // file as a zip (COLLADA, 3MF), reads textures from it too, and aborts on a damaged member. A
+  // member that is COLLADA by its name or its content has its index lists checked: assimp reads
+  // the one manifest.xml names, whatever that name is, or else the first .dae.
+  const bool read = forEachZipMember(path, bytes, [](std::string_view) { return true; },
+                                     [&](const std::string& name, std::string_view contents) {
+                                       if (readAsCollada(name, contents)) {
+                                         requireIntegerIndexLists(path + " (" + name + ")", contents);
+                                       }
+                                     });
+  if (!read && (lowerCaseExtension(path) == ".zae" || zipHoldsCollada(bytes))) {
     throw InputError(path + ": zipped COLLADA without a central directory: the COLLADA inside cannot be checked "
                             "before assimp reads it");
   }

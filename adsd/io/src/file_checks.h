@@ -51,10 +51,11 @@ bool startsWithOffKeyword(std::string_view text);
 /// looks for in a file of any other name.
 bool readAsCollada(const std::string& path, std::string_view bytes);
 
-/// \brief For a zipped COLLADA archive (.zae, or a zip of any name holding a manifest.xml or a
-/// .dae, which assimp unzips and reads): every .dae member unzipped (zip_archive.h) and checked
-/// by requireIntegerIndexLists, its errors naming "PATH (MEMBER):LINE". Throws InputError naming
-/// \p path for an archive whose members cannot be read back to be checked.
+/// \brief For a zip archive of any name (assimp unzips .zae and 3MF, whatever the file is called):
+/// every member unzipped (zip_archive.h) and matched against its checksum, and each member that is
+/// COLLADA by name or content checked by requireIntegerIndexLists, its errors naming
+/// "PATH (MEMBER):LINE". Throws InputError naming \p path for an archive whose members cannot be
+/// read back, and for a .zae or a zip naming a .dae whose directory cannot be found.
 void checkZippedCollada(const std::string& path, std::string_view bytes);
 
 /// \brief COLLADA: every `<p>` index list holds integers and whitespace only, up to its `</p>`;

@@ -16,6 +16,7 @@ namespace {
 constexpr std::string_view kEndOfDirectory("PK\5\6", 4);
 constexpr std::string_view kDirectoryEntry("PK\1\2", 4);
 constexpr std::string_view kLocalHeader("PK\3\4", 4);
+constexpr std::string_view kZip64Locator("PK\6\7", 4);
 constexpr std::size_t kEndOfDirectorySize = 22;
 constexpr std::size_t kLongestArchiveComment = 0xFFFF;
 constexpr std::size_t kDirectoryEntrySize = 46;
@@ -61,20 +62,24 @@ bool forEachZipMember(const std::string& path, std::string_view bytes,
       bytes.size() > kEndOfDirectorySize + kLongestArchiveComment ? bytes.size() - kEndOfDirectorySize - kLongestArchiveComment : 0;
   std::size_t end = bytes.rfind(kEndOfDirectory, bytes.size() - kEndOfDirectorySize);
   if (end == std::string_view::npos || end < earliest) return false;
-  const std::uint32_t entries = little(bytes, end + 10, 2);
   const std::uint32_t directorySize = little(bytes, end + 12, 4);
   const std::uint32_t directoryOffset = little(bytes, end + 16, 4);
   const std::string zipped = path + ": zip archive";
-  if (directoryOffset == kZip64Marker || directorySize > end || directoryOffset > end - directorySize) {
+  // A ZIP64 locator before the end record points unzip to another directory than this one.
+  const bool zip64 = end >= 20 && bytes.substr(end - 20, 4) == kZip64Locator;
+  if (zip64 || directoryOffset == kZip64Marker || directorySize > end || directoryOffset > end - directorySize) {
     throw InputError(zipped + ": its central directory does not fit the file (or is ZIP64), so its members cannot be checked");
   }
   // Offsets count from the archive's first byte, which other bytes may precede.
   const std::size_t base = end - directorySize - directoryOffset;
   std::size_t at = base + directoryOffset;
-  for (std::uint32_t k = 0; k < entries; ++k) {
-    if (at + kDirectoryEntrySize > end || bytes.substr(at, 4) != kDirectoryEntry) {
-      throw InputError(zipped + ": central directory entry " + std::to_string(k) + " is not where the directory says");
-    }
+  // Every entry up to the end record, whatever count the record gives: unzip reads on past a
+  // count of 0.
+  if (bytes.substr(at, 4) != kDirectoryEntry && at != end) {
+    throw InputError(zipped + ": its central directory is not where the end record says");
+  }
+  while (bytes.substr(at, 4) == kDirectoryEntry) {
+    if (at + kDirectoryEntrySize > end) throw InputError(zipped + ": a central directory entry runs past its end");
     const std::uint16_t flags = static_cast<std::uint16_t>(little(bytes, at + 8, 2));
     const std::uint16_t method = static_cast<std::uint16_t>(little(bytes, at + 10, 2));
     const std::uint32_t checksum = little(bytes, at + 16, 4);

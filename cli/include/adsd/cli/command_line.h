@@ -60,7 +60,8 @@ class Arguments {
   std::optional<std::string> text(const std::string& name) const;
   /// Option \p name as a file the program will write once its work is done: checked now, so that
   /// a run of minutes does not end in "cannot write". Throws UsageError when the name is empty,
-  /// names a directory, or its directory does not exist or cannot be written.
+  /// names a directory, a device, a pipe or a socket, or its directory does not exist or cannot
+  /// be written.
   std::optional<std::string> outputFile(const std::string& name) const;
   /// Every value of a repeated option, or the positional arguments (CommandLine::positional).
   std::vector<std::string> texts(const std::string& name) const;
