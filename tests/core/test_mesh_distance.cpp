@@ -475,4 +475,19 @@ TEST(MeshDistance, AFineMeshFarFromACoarseOneIsBoundedByHulls) {
 }
 
 }  // namespace
+/// Two parallel triangles s across, their corners s and 2 s along the axes: s / sqrt(3) apart.
+/// At s = 1e-55 the face test's sixth power of lengths underflowed to 0, and 0 >= 0 proved the
+/// nearer face farther than it is: the answer was s, 73 % too far (triangle_distance.cpp,
+/// faceFartherThan). The scales where that product stays a normal double.
+TEST(MeshDistance, TinyParallelTrianglesKeepTheirFaceDistance) {
+  for (const double s : {1.0, 1e-20, 1e-40, 1e-50, 1e-55}) {
+    SCOPED_TRACE(s);
+    const std::vector<Vec3> corners = {Vec3(s, 0, 0), Vec3(0, s, 0), Vec3(0, 0, s)};
+    const Mesh a(corners, {{0, 1, 2}}, "a");
+    const Mesh b({2.0 * corners[0], 2.0 * corners[1], 2.0 * corners[2]}, {{0, 1, 2}}, "b");
+    const DistanceResult r = distance(a, Pose::Identity(), b, Pose::Identity(), DistanceOptions::exactDistance());
+    EXPECT_NEAR(r.distance, s / std::sqrt(3.0), 1e-12 * s);
+  }
+}
+
 }  // namespace adsd

@@ -642,11 +642,29 @@ TEST(LoadMeshBadInput, PlyAndColladaOfAnyNameAreChecked) {
     const Mesh fine = io::loadMesh(dir.write("fine.zae", zipOf("scene.dae", good, deflated)));
     EXPECT_EQ(fine.triangleCount(), io::loadMesh(dir.write("fine.dae", good)).triangleCount());
   }
+  // COLLADA under any member name (a manifest may name model.xml), behind an end record counting
+  // 0 entries (unzip reads on past the count), or a directory a ZIP64 locator replaces: each
+  // reached assimp's COLLADA reader unchecked (a helper's sweep: 26.7 GB, then out of memory).
+  const std::string xml = loadError(dir.write("xml.zae", zipOf("model.xml", dae, true)));
+  EXPECT_NE(xml.find("xml.zae (model.xml):16: the index list <p> holds"), std::string::npos) << xml;
+  std::string uncounted = zipOf("scene.dae", dae, true);
+  uncounted[uncounted.size() - 22 + 8] = uncounted[uncounted.size() - 22 + 10] = '\0';
+  const std::string zero = loadError(dir.write("zero.zae", uncounted));
+  EXPECT_NE(zero.find("zero.zae (scene.dae):16: the index list <p> holds"), std::string::npos) << zero;
+  std::string located = zipOf("scene.dae", good, true);
+  located.insert(located.size() - 22, std::string("PK\6\7", 4) + std::string(16, '\0'));
+  const std::string zip64 = loadError(dir.write("zip64.zae", located));
+  EXPECT_NE(zip64.find("ZIP64"), std::string::npos) << zip64;
   // A damaged member: assimp's unzip aborted the process on its checksum (fuzzing duck.zae).
   std::string damaged = zipOf("scene.dae", good, false);
   damaged[30 + 9 + 100] ^= 0x01;  // a byte of the stored member (after the 30-byte header and its name)
   const std::string crc = loadError(dir.write("damaged.zae", damaged));
   EXPECT_NE(crc.find("damaged.zae: zip member 'scene.dae' does not match its CRC-32 checksum"), std::string::npos) << crc;
+  // Any zip, whatever it holds and is called: assimp's 3MF reader opens it too.
+  std::string rels = zipOf("_rels/.rels", "<Relationships/>", false);
+  rels[30 + 11 + 3] ^= 0x01;
+  const std::string package = loadError(dir.write("package.bin", rels));
+  EXPECT_NE(package.find("zip member '_rels/.rels' does not match its CRC-32"), std::string::npos) << package;
 }
 
 // PLY, OFF and ASCII STL files of any name are read by our readers, exactly (assimp would store
