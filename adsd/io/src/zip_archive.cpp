@@ -78,7 +78,7 @@ bool forEachZipMember(const std::string& path, std::string_view bytes,
   if (bytes.substr(at, 4) != kDirectoryEntry && at != end) {
     throw InputError(zipped + ": its central directory is not where the end record says");
   }
-  while (bytes.substr(at, 4) == kDirectoryEntry) {
+  while (at + 4 <= end && bytes.substr(at, 4) == kDirectoryEntry) {
     if (at + kDirectoryEntrySize > end) throw InputError(zipped + ": a central directory entry runs past its end");
     const std::uint16_t flags = static_cast<std::uint16_t>(little(bytes, at + 8, 2));
     const std::uint16_t method = static_cast<std::uint16_t>(little(bytes, at + 10, 2));
