@@ -67,17 +67,16 @@ bool forEachZipMember(const std::string& path, std::string_view bytes,
   const std::string zipped = path + ": zip archive";
   // A ZIP64 locator before the end record points unzip to another directory than this one.
   const bool zip64 = end >= 20 && bytes.substr(end - 20, 4) == kZip64Locator;
-  if (zip64 || directoryOffset == kZip64Marker || directorySize > end || directoryOffset > end - directorySize) {
-    throw InputError(zipped + ": its central directory does not fit the file (or is ZIP64), so its members cannot be checked");
-  }
+  if (zip64) throw InputError(zipped + ": ZIP64 is not read, so its members cannot be checked");
+  // An end record whose directory does not fit is no zip's (unzip cannot open it either): the
+  // signature may occur by chance in a file of another format.
+  if (directoryOffset == kZip64Marker || directorySize > end || directoryOffset > end - directorySize) return false;
   // Offsets count from the archive's first byte, which other bytes may precede.
   const std::size_t base = end - directorySize - directoryOffset;
   std::size_t at = base + directoryOffset;
   // Every entry up to the end record, whatever count the record gives: unzip reads on past a
   // count of 0.
-  if (bytes.substr(at, 4) != kDirectoryEntry && at != end) {
-    throw InputError(zipped + ": its central directory is not where the end record says");
-  }
+  if (bytes.substr(at, 4) != kDirectoryEntry && at != end) return false;
   while (at + 4 <= end && bytes.substr(at, 4) == kDirectoryEntry) {
     if (at + kDirectoryEntrySize > end) throw InputError(zipped + ": a central directory entry runs past its end");
     const std::uint16_t flags = static_cast<std::uint16_t>(little(bytes, at + 8, 2));

@@ -18,7 +18,7 @@ constexpr std::size_t kMaxInflatedMemberBytes = std::size_t{1} << 30;
 /// \brief Calls \p onMember(name, contents) for each member of the zip archive in \p bytes whose
 /// name \p wanted accepts, with its contents stored or inflated. The archive may follow other
 /// bytes (a self-extracting one), as zip readers allow. Returns false when \p bytes hold no
-/// central directory (not a zip, or a cut one). Throws InputError naming \p path for a member
+/// central directory where an end record says (not a zip, or a cut one). Throws InputError naming \p path for a member
 /// that cannot be read back: encrypted, compressed other than by deflate, ZIP64, sizes beyond
 /// kMaxInflatedMemberBytes, records that do not fit the file, or contents that do not match
 /// their CRC-32 checksum.
