@@ -14,6 +14,7 @@
 #include <assimp/scene.h>
 
 #include "adsd/error.h"
+#include "child_process_reader.h"
 #include "file_checks.h"
 #include "polygon_soup.h"
 
@@ -66,12 +67,7 @@ std::string formatPoint(const aiVector3D& p) {
 }
 
 /// Triangles gathered from the node tree, in the file's root frame.
-struct Gathered {
-  std::vector<Vec3> vertices;
-  std::vector<TriangleIndices> triangles;
-  std::uint64_t lines = 0;
-  std::uint64_t points = 0;
-};
+using Gathered = detail::ReadTriangles;
 
 /// Appends the triangles of \p mesh, placed by \p toRoot, to \p out. requireConsistentScene checked
 /// the indices before post-processing; they are checked again here, after it, because reading out
@@ -282,29 +278,16 @@ void requireMoreThanOnePoint(const Gathered& gathered, const std::string& path) 
                    " triangles on the single point " + where.str() + ", not a surface (is it a mesh file?)");
 }
 
-Mesh loadMeshUnguarded(const std::string& path) {
-  {
-    const std::string bytes = detail::readWholeFile(path);
-    // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
-    // docs/numerics.md for the measurement); everything else goes through assimp, in float.
-    switch (detail::chooseReader(path, bytes)) {
-      case detail::MeshReader::obj: return detail::meshFromSoup(detail::readObj(path, bytes), path);
-      case detail::MeshReader::off: return detail::meshFromSoup(detail::readOff(path, bytes), path);
-      case detail::MeshReader::ply: return detail::meshFromSoup(detail::readPly(path, bytes), path);
-      case detail::MeshReader::stl:
-        detail::requireCompleteBinaryStl(path, bytes, bytes.size());
-        return detail::meshFromSoup(detail::readStl(path, bytes), path);
-      case detail::MeshReader::assimp: break;
-    }
-    // Assimp reads COLLADA by content whatever the file's name, so the check goes by content too.
-    detail::checkZippedCollada(path, bytes);
-    if (detail::readAsCollada(path, bytes)) detail::requireIntegerIndexLists(path, bytes);
-  }  // the bytes are freed before assimp reads the file itself (it may need files beside it)
-
+/// Assimp's part of loading: parse, post-process and gather the triangles in double. Runs in the
+/// child process of readInChildProcess, so its InputErrors travel back as messages.
+Gathered readWithAssimp(const std::string& path) {
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, 0);
   if (scene == nullptr) {
-    throw InputError(path + ": cannot be parsed: " + oneLine(importer.GetErrorString()));
+    const std::string error = oneLine(importer.GetErrorString());
+    // Assimp catches the allocation failure itself; thrown again, it is reported with the limit.
+    if (error.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
+    throw InputError(path + ": cannot be parsed: " + error);
   }
   requireConsistentScene(*scene, path);
   std::uint64_t lines = 0, points = 0;
@@ -323,8 +306,34 @@ Mesh loadMeshUnguarded(const std::string& path) {
     throw InputError(path + ": cannot be parsed: " + oneLine(importer.GetErrorString()));
   }
   if (scene->mRootNode == nullptr) throw InputError(path + ": the file holds no scene nodes");
+  return gatherScene(*scene, path);
+}
 
-  Gathered gathered = gatherScene(*scene, path);
+Mesh loadMeshUnguarded(const std::string& path, const ReaderLimits& limits) {
+  std::uint64_t fileBytes = 0;
+  {
+    const std::string bytes = detail::readWholeFile(path);
+    fileBytes = bytes.size();
+    // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
+    // docs/numerics.md for the measurement); everything else goes through assimp, in float.
+    switch (detail::chooseReader(path, bytes)) {
+      case detail::MeshReader::obj: return detail::meshFromSoup(detail::readObj(path, bytes), path);
+      case detail::MeshReader::off: return detail::meshFromSoup(detail::readOff(path, bytes), path);
+      case detail::MeshReader::ply: return detail::meshFromSoup(detail::readPly(path, bytes), path);
+      case detail::MeshReader::stl:
+        detail::requireCompleteBinaryStl(path, bytes, bytes.size());
+        return detail::meshFromSoup(detail::readStl(path, bytes), path);
+      case detail::MeshReader::assimp: break;
+    }
+    // Assimp reads COLLADA by content whatever the file's name, so the check goes by content too.
+    // The checks stay although assimp runs in a child process: they name the element at fault,
+    // where the child's end could only say that assimp crashed or ran out of time.
+    detail::checkZippedCollada(path, bytes);
+    if (detail::readAsCollada(path, bytes)) detail::requireIntegerIndexLists(path, bytes);
+  }  // the bytes are freed before assimp reads the file itself (it may need files beside it)
+
+  Gathered gathered = detail::readInChildProcess(path, [&] { return readWithAssimp(path); },
+                                                 detail::effectiveLimits(limits, fileBytes));
   if (gathered.triangles.empty()) throwNoTriangles(path, gathered.lines, gathered.points);
   requireMoreThanOnePoint(gathered, path);
   detail::dropRepeatedTriangles(gathered.triangles, gathered.vertices.size());
@@ -333,9 +342,9 @@ Mesh loadMeshUnguarded(const std::string& path) {
 
 }  // namespace
 
-Mesh loadMesh(const std::string& path) {
+Mesh loadMesh(const std::string& path, const ReaderLimits& limits) {
   try {
-    return loadMeshUnguarded(path);
+    return loadMeshUnguarded(path, limits);
   } catch (const std::bad_alloc&) {
     throw InputError(path + ": out of memory while loading the mesh");
   }

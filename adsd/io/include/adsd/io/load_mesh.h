@@ -3,11 +3,24 @@
 /// \brief Reading meshes from files: OBJ, OFF, PLY and STL into double without loss; COLLADA and
 /// every other format assimp reads through assimp, in float.
 
+#include <cstdint>
 #include <string>
 
 #include "adsd/mesh.h"
 
 namespace adsd::io {
+
+/// \brief Bounds on assimp while it reads a file. Assimp runs in a child process (see loadMesh),
+/// and one that passes either bound is stopped and the file refused with a message that says
+/// which. A zero (or any value that is not a positive finite number) picks the default, sized by
+/// the file.
+struct ReaderLimits {
+  /// Wall-clock seconds assimp may take; 0: 30 s plus 1 s per MB of the file.
+  double seconds = 0;
+  /// Bytes of address space assimp may add to the process's; 0: 4 GiB or 64 times the file's
+  /// size, whichever is more. Not applied in builds with a sanitizer (its shadow memory).
+  std::uint64_t memoryBytes = 0;
+};
 
 /// \brief Loads every triangle of the file as one mesh.
 ///
@@ -36,11 +49,18 @@ namespace adsd::io {
 /// repeat across two of them stays. Triangle numbers (`adsd distance`'s witnesses) index the
 /// loaded mesh.
 ///
+/// Assimp runs in a child process of its own (fork), so that a reader of its that crashes,
+/// aborts, loops or allocates without end on a damaged file (some do: docs/reliability.md) costs
+/// an error message, not the calling program; \p limits bounds its time and memory. (Loading
+/// while other threads run is safe as far as the C library's allocator goes; a lock of another
+/// library held by another thread at that moment would stall the child until the time limit.)
+///
 /// Throws adsd::InputError, one line starting with the path (and ":LINE" where the format has
 /// lines), for: a missing, unreadable, empty or non-regular file; a malformed line; a truncated
-/// binary STL or PLY; a file assimp cannot parse; no triangles (only lines or points, say); a
+/// binary STL or PLY; a file assimp cannot parse, crashes on or does not finish within
+/// \p limits; no triangles (only lines or points, say); a
 /// vertex index out of range; a non-finite coordinate or one beyond +-tolerance::kMaxCoordinate
 /// (1e75). Running out of memory is reported the same way.
-Mesh loadMesh(const std::string& path);
+Mesh loadMesh(const std::string& path, const ReaderLimits& limits = {});
 
 }  // namespace adsd::io
