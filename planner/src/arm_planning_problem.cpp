@@ -189,6 +189,15 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
       std::ostringstream why;
       why << where << ": " << which << " is in collision (clearance " << checker_->clearance(s) << ", safety margin "
           << options_.safetyMargin << ")";
+      // Which pairs: with a robot new to the program, often two links that touch in the URDF's
+      // own pose, which an SRDF's <disable_collisions> (the cfg's srdf key) leaves unchecked.
+      const std::vector<std::string> pairs = checker_->pairsInContact(s);
+      bool selfContact = false;
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        why << (k == 0 ? ": " : ", ") << pairs[k];
+        selfContact = selfContact || pairs[k].rfind("links ", 0) == 0;
+      }
+      if (selfContact) why << " (an SRDF's <disable_collisions> leaves a pair of links unchecked)";
       throw InputError(why.str());
     }
   }

@@ -126,6 +126,51 @@ const Mesh& ArmValidityCheckerBase::bodyMesh(std::size_t b) const {
                                 : scene_->environment[b - linkOfBody_.size()];
 }
 
+std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base::State* state,
+                                                                std::size_t count) const {
+  const std::vector<Pose>& linkPoses = posesFor(state);
+  const ArmModel& model = *scene_->model;
+  auto linkName = [&](std::size_t body) { return "'" + model.links[linkOfBody_[body]].name + "'"; };
+  // An obstacle part is named after its object: splitIntoParts appends " part N" to the name.
+  auto obstacleName = [&](std::size_t body) {
+    std::string name = bodyMesh(body).name();
+    const std::size_t part = name.rfind(" part ");
+    if (part != std::string::npos &&
+        name.find_first_not_of("0123456789", part + 6) == std::string::npos && part + 6 < name.size()) {
+      name.erase(part);
+    }
+    return "'" + name + "'";
+  };
+  std::vector<std::string> found;
+  std::size_t more = 0;
+  auto note = [&](std::string what) {
+    // An object split into parts may touch a link with several of them: named once.
+    if (std::find(found.begin(), found.end(), what) != found.end()) return;
+    if (found.size() < count) {
+      found.push_back(std::move(what));
+    } else {
+      ++more;
+    }
+  };
+  const Pose identity = Pose::Identity();
+  for (std::size_t b = 0; b < linkOfBody_.size(); ++b) {
+    const Pose& pose = linkPoses[linkOfBody_[b]];
+    for (std::size_t e = 0; e < scene_->environment.size(); ++e) {
+      const std::size_t body = linkOfBody_.size() + e;
+      if (!pairSeparatedAbove(b, pose, body, identity, safetyMargin_)) {
+        note("link " + linkName(b) + " and obstacle " + obstacleName(body));
+      }
+    }
+  }
+  for (const auto& [a, b] : selfPairs_) {
+    if (!pairSeparatedAbove(a, linkPoses[linkOfBody_[a]], b, linkPoses[linkOfBody_[b]], safetyMargin_)) {
+      note("links " + linkName(a) + " and " + linkName(b));
+    }
+  }
+  if (more > 0) found.push_back("and " + std::to_string(more) + " more pairs");
+  return found;
+}
+
 const std::vector<Pose>& ArmValidityCheckerBase::posesFor(const ompl::base::State* state) const {
   ArmScratch& s = threadScratch();
   s.q.resize(space_->dof());

@@ -60,6 +60,22 @@ TEST(ArmValidityChecker, SmallArmClearanceAsWorkedOutByHand) {
   EXPECT_THROW(ArmValidityChecker(si, scene, 0.0, DistanceOptions::aboveThreshold(0.1)), InputError);
 }
 
+// The message of a start or goal in collision names the pairs in contact (arm_planning_problem.cpp).
+TEST(ArmValidityChecker, PairsInContactNameTheLinkAndTheObstacle) {
+  const ArmScene touching = test::sliderScene(0.52);
+  auto si = spaceFor(*touching.model);
+  auto checker = std::make_shared<ArmValidityChecker>(si, touching);
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  const double q[2] = {0.0, 0.0};
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
+  EXPECT_EQ(checker->pairsInContact(s.get()), std::vector<std::string>{"link 'tip' and obstacle 'box'"});
+  EXPECT_EQ(checker->pairsInContact(s.get(), 0), std::vector<std::string>{"and 1 more pairs"});
+  // Turned away from the box: nothing touches.
+  const double away[2] = {0.0, 3.14159265358979};
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(away, s.get());
+  EXPECT_TRUE(checker->pairsInContact(s.get()).empty());
+}
+
 /// States to compare with the brute force: \p regular, or \p sanitized in sanitizer builds, where
 /// the brute force costs several times more.
 int statesToCheck(int regular, int sanitized) {

@@ -262,8 +262,10 @@ TEST(ArmPlanCommand, StartInCollisionNamesTheRequestLine) {
   const std::string text =
       replaced(shippedRequest(), "position: [0, -0.6, -1.2, 0, 0.5, 0]", "position: [0, 1.9, 0, 0, 0, 0]");
   const fs::path cfg = writeProblem(dir, text);
+  // The pairs in contact are named, the obstacle by its scene id.
   expectRefused(cfg, dir, (dir / "request.yaml").string() + ":" + std::to_string(lineOf(text, "position: [0, 1.9")),
-                "the start state is in collision (clearance ");
+                "the start state is in collision (clearance 0, safety margin 0): link 'bicep' and obstacle 'table', "
+                "link 'elbow' and obstacle 'table'\n");
 }
 
 TEST(ArmPlanCommand, StartOutsideTheLimitsNamesTheRequestLine) {

@@ -48,8 +48,9 @@ class ArmPlanningProblem {
   /// builds the scene and the setup, and checks start and goal. Throws adsd::InputError naming
   /// the file and line for anything wrong in them, for a start or goal outside the joint limits
   /// ("FILE:LINE: the start state is outside the joint limits (joint J = V, limits [L, U])") or
-  /// in collision ("FILE:LINE: the start state is in collision (clearance X, safety margin M)"),
-  /// the line being that of the request's first joint of the start or goal.
+  /// in collision ("FILE:LINE: the start state is in collision (clearance X, safety margin M):
+  /// link 'A' and obstacle 'O', links 'A' and 'B'", up to three pairs, from pairsInContact), the
+  /// line being that of the request's first joint of the start or goal.
   ArmPlanningProblem(const MotionBenchMakerProblem& file, const CheckingOptions& options);
 
   ompl::geometric::SimpleSetup& setup() { return *setup_; }

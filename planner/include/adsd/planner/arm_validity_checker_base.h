@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -67,6 +68,12 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// with w_P = 0 are left out (their distance cannot change). Counted as a clearance query.
   double weightedClearanceUpTo(const ompl::base::State* state, const double* linkWeights,
                                const double* selfPairWeights, double subtract, double cap) const;
+
+  /// \brief For messages: the checked pairs not separated by more than the safety margin at
+  /// \p state, in checking order, as "links 'A' and 'B'" or "link 'A' and obstacle 'NAME'"; at most
+  /// \p count of them, then "and N more pairs". Empty when the state is free. Tests every pair
+  /// (no broad phase): not for a planner's inner loop.
+  std::vector<std::string> pairsInContact(const ompl::base::State* state, std::size_t count = 3) const;
 
   double safetyMargin() const { return safetyMargin_; }
   /// \brief The scene's length scale: the diagonal of the box around the obstacles and the arm's
