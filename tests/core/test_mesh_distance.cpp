@@ -474,6 +474,34 @@ TEST(MeshDistance, AFineMeshFarFromACoarseOneIsBoundedByHulls) {
   EXPECT_LT(perQuery, static_cast<double>(knotLeaves)) << "node pairs per query, knot of " << knotLeaves << " leaves";
 }
 
+// Two flat bars crossing at right angles, one above the other, each turned 45 degrees about its
+// length: no face axis of either box and not the line through their centres separates them, only
+// the cross product of their lengths (z). A validity query tested the roots by their spheres
+// alone and went down to the leaves (DRC-Hubo's fingers: 190 node pairs); the roots' box test
+// with the edge-edge axes decides it at once, and the threshold on either side of the distance
+// still gets its answer.
+TEST(MeshDistance, BoxesApartOnlyAlongAnEdgeAxisEndAValidityQueryAtTheRoots) {
+  Mesh a = shapes::box(Vec3(1.0, 0.15, 0.025));
+  Mesh b = shapes::box(Vec3(0.15, 1.0, 0.025));
+  a.buildHierarchy();
+  b.buildHierarchy();
+  const double turn = M_PI / 4;
+  const Pose poseA(Eigen::AngleAxisd(turn, Vec3::UnitX()));
+  const Pose poseB(Eigen::Translation3d(0.5, 0.5, 0.35) * Eigen::AngleAxisd(turn, Vec3::UnitY()));
+  // Each bar reaches 0.15 sin 45 + 0.025 cos 45 along z from its centre line.
+  const double gap = 0.35 - 2.0 * (0.15 + 0.025) * std::sqrt(0.5);
+  const oracle::MeshPairDistance truth = oracle::meshDistance(a, poseA, b, poseB);
+  EXPECT_NEAR(truth.value, gap, 1e-12);
+  const DistanceResult free = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(0.0));
+  EXPECT_EQ(free.status, DistanceStatus::aboveThreshold);
+  EXPECT_EQ(free.counters.subMeshPairs, 1u);
+  const DistanceResult justAbove = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(gap - 1e-6));
+  EXPECT_EQ(justAbove.status, DistanceStatus::aboveThreshold);
+  const DistanceResult within = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(gap + 1e-6));
+  EXPECT_EQ(within.status, DistanceStatus::withinThreshold);
+  EXPECT_NEAR(within.distance, truth.value, 1e-12);
+}
+
 }  // namespace
 /// Two parallel triangles s across, their corners s and 2 s along the axes: s / sqrt(3) apart.
 /// At s = 1e-55 the face test's sixth power of lengths underflowed to 0, and 0 >= 0 proved the
