@@ -9,8 +9,9 @@
 #
 # Leaves DIR/KR5 (the KUKA KR5 sixx R650: "KR5 sixx R650.urdf" and meshes/), DIR/wam (the Barrett
 # WAM: wam.urdf and meshes/), DIR/herb_description -> wam (the package the WAM's package:// URIs
-# name) and DIR/dart-doc.copyright (BSD-2-clause, `Files: *`; docs/problem-files.md). Idempotent:
-# does nothing when both URDFs are there. Exit status 0 on success, 1 with a one-line message.
+# name), DIR/drchubo (DRC-Hubo, problems/arm_other: drchubo.urdf and meshes/) and
+# DIR/dart-doc.copyright (BSD-2-clause, `Files: *`; docs/problem-files.md). Idempotent: does
+# nothing when the three URDFs are there. Exit status 0 on success, 1 with a one-line message.
 set -euo pipefail
 
 cache_dir="${ADSD_ROBOTS:-$HOME/.cache/adsd/robots}"
@@ -23,7 +24,7 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 
-if [[ -s "$cache_dir/KR5/KR5 sixx R650.urdf" && -s "$cache_dir/wam/wam.urdf" ]]; then
+if [[ -s "$cache_dir/KR5/KR5 sixx R650.urdf" && -s "$cache_dir/wam/wam.urdf" && -s "$cache_dir/drchubo/drchubo.urdf" ]]; then
   [[ -e "$cache_dir/herb_description" ]] || ln -sfn wam "$cache_dir/herb_description"
   echo "fetch_robots.sh: robots already cached in $cache_dir"
   exit 0
@@ -45,8 +46,8 @@ deb="$(ls "$work"/dart-doc_*.deb 2>/dev/null | head -n1)"
 [[ -n "$deb" ]] || die "apt-get download left no dart-doc_*.deb"
 dpkg -x "$deb" "$work/x" || die "dpkg -x $deb failed"
 urdf="$work/x/usr/share/doc/dart/data/urdf"
-[[ -d "$urdf/KR5" && -d "$urdf/wam" ]] || die "$deb has no data/urdf/KR5 and data/urdf/wam"
-for robot in KR5 wam; do
+[[ -d "$urdf/KR5" && -d "$urdf/wam" && -d "$urdf/drchubo" ]] || die "$deb has no data/urdf/KR5, wam and drchubo"
+for robot in KR5 wam drchubo; do
   rm -rf "$cache_dir/.$robot.partial"
   cp -r "$urdf/$robot" "$cache_dir/.$robot.partial"
   rm -rf "$cache_dir/$robot"
@@ -54,4 +55,4 @@ for robot in KR5 wam; do
 done
 ln -sfn wam "$cache_dir/herb_description"
 cp "$work/x/usr/share/doc/dart-doc/copyright" "$cache_dir/dart-doc.copyright"
-echo "fetch_robots.sh: cached KR5 and wam from $(basename "$deb") in $cache_dir"
+echo "fetch_robots.sh: cached KR5, wam and drchubo from $(basename "$deb") in $cache_dir"

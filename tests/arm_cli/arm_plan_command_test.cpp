@@ -35,6 +35,10 @@ namespace fs = std::filesystem;
 const std::string kArmProblems = ADSD_ARM_PROBLEMS_DIR;
 
 std::string cfgOf(const std::string& name) { return kArmProblems + "/" + name + "/problem.cfg"; }
+/// A problem of problems/arm_other (robots the shipped problems do not use).
+std::string otherCfgOf(const std::string& name) {
+  return (fs::path(kArmProblems).parent_path() / "arm_other" / name / "problem.cfg").string();
+}
 
 /// The robots are a download (problems/data/fetch_robots.sh): skip without them.
 #define SKIP_WITHOUT_ROBOTS(cfg)                                                                          \
@@ -108,9 +112,8 @@ PathFile readPath(const fs::path& p) {
   return f;
 }
 
-/// Plans \p name with \p checker through the program and checks its path file.
-void planAndCheck(const std::string& name, const std::string& checker) {
-  const std::string cfg = cfgOf(name);
+/// Plans the problem of \p cfg with \p checker through the program and checks its path file.
+void planAndCheck(const std::string& cfg, const std::string& checker) {
   const fs::path dir = workDirectory();
   const fs::path pathFile = dir / "path.txt";
   const PlanRun r = plan({cfg, "--planner", "rrtconnect", "--time", "10", "--seed", "1", "--checker", checker, "--path",
@@ -174,25 +177,31 @@ void planAndCheck(const std::string& name, const std::string& checker) {
 
 TEST(ArmPlanCommand, SolvesKr5TablePickWithOurChecker) {
   SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
-  planAndCheck("kr5_table_pick", "adsd");
+  planAndCheck(cfgOf("kr5_table_pick"), "adsd");
 }
 
 TEST(ArmPlanCommand, SolvesWamBoxWithOurChecker) {
   SKIP_WITHOUT_ROBOTS(cfgOf("wam_box"));
-  planAndCheck("wam_box", "adsd");
+  planAndCheck(cfgOf("wam_box"), "adsd");
 }
 
 #if ADSD_PLANNER_HAS_FCL
 TEST(ArmPlanCommand, SolvesKr5TablePickWithFcl) {
   SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
-  planAndCheck("kr5_table_pick", "fcl");
+  planAndCheck(cfgOf("kr5_table_pick"), "fcl");
 }
 
 TEST(ArmPlanCommand, SolvesWamBoxWithFcl) {
   SKIP_WITHOUT_ROBOTS(cfgOf("wam_box"));
-  planAndCheck("wam_box", "fcl");
+  planAndCheck(cfgOf("wam_box"), "fcl");
 }
 #endif
+
+// Another robot: DRC-Hubo, a humanoid of 51 joints and 52 links of 650 to 4100 triangles.
+TEST(ArmPlanCommand, SolvesDrcHuboReachWithOurChecker) {
+  SKIP_WITHOUT_ROBOTS(otherCfgOf("drchubo_reach"));
+  planAndCheck(otherCfgOf("drchubo_reach"), "adsd");
+}
 
 // ---- bad input: exit 2, one line naming the file and line, nothing written -----------------------
 
@@ -266,6 +275,24 @@ TEST(ArmPlanCommand, StartInCollisionNamesTheRequestLine) {
   expectRefused(cfg, dir, (dir / "request.yaml").string() + ":" + std::to_string(lineOf(text, "position: [0, 1.9")),
                 "the start state is in collision (clearance 0, safety margin 0): link 'bicep' and obstacle 'table', "
                 "link 'elbow' and obstacle 'table'\n");
+}
+
+// Without its SRDF, DRC-Hubo's own pose has links in contact that are not adjacent in the URDF:
+// the error names them and the SRDF element that leaves them unchecked.
+TEST(ArmPlanCommand, SelfContactNamesTheLinksAndTheSrdfRemedy) {
+  const std::string shipped = otherCfgOf("drchubo_reach");
+  SKIP_WITHOUT_ROBOTS(shipped);
+  const fs::path dir = workDirectory();
+  for (const char* file : {"scene.yaml", "request.yaml"}) fs::copy_file(fs::path(shipped).parent_path() / file, dir / file);
+  std::string cfg = readAll(shipped);
+  const std::string srdfLine = "srdf = drchubo.srdf\n";
+  ASSERT_NE(cfg.find(srdfLine), std::string::npos);
+  cfg.erase(cfg.find(srdfLine), srdfLine.size());
+  std::ofstream(dir / "problem.cfg") << cfg;
+  expectRefused(dir / "problem.cfg", dir, (dir / "request.yaml").string() + ":" + std::to_string(lineOf(readAll(dir / "request.yaml"), "position: [0, 0, 0, 0]")),
+                "the start state is in collision (clearance 0, safety margin 0): links 'Body_LSP' and 'Body_LSY', "
+                "links 'Body_RSP' and 'Body_RSY', links 'Body_LHY' and 'Body_LHP', and 3 more pairs (an SRDF's "
+                "<disable_collisions> leaves a pair of links unchecked)\n");
 }
 
 TEST(ArmPlanCommand, StartOutsideTheLimitsNamesTheRequestLine) {
