@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <type_traits>
@@ -40,9 +41,12 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double) && std::is_trivially_copyable_v
                   sizeof(TriangleIndices) == 3 * sizeof(std::uint32_t),
               "the child sends vertices and triangles as their bytes");
 
-/// What the child writes to the pipe: one tag byte, then the answer.
+/// What the child writes to the pipe: one tag byte, the answer's length in bytes (std::uint64_t),
+/// then the answer. The parent stops reading once it has that many: it need not wait for the end
+/// of the pipe, which a child forked meanwhile by another thread's load could hold open.
 constexpr char kTriangles = 'T';  // four std::uint64_t (vertex, triangle, line, point counts), the arrays
-constexpr char kError = 'E';      // the InputError's message, to the end
+constexpr char kError = 'E';      // the InputError's message
+constexpr std::size_t kFrameHead = 1 + sizeof(std::uint64_t);
 
 /// Writes all of \p bytes to \p fd; false when the pipe is gone (the parent stopped reading).
 bool writeAll(int fd, const void* bytes, std::size_t count) {
@@ -75,8 +79,17 @@ void capAddressSpace(std::uint64_t budget) {
 
 /// The child's whole life: read, send the answer or the error, exit without running the parent's
 /// exit handlers or flushing its stdio buffers (they were copied at the fork).
-[[noreturn]] void runChild(int fd, const std::string& path, const std::function<ReadTriangles()>& read,
-                           const ReaderLimits& limits) {
+/// noexcept: whatever escapes (a message that cannot be built after std::bad_alloc) aborts the
+/// child, reported as a crash, instead of running on in the parent's code.
+[[noreturn]] void runChild(int pipeEnd, const std::string& path, const std::function<ReadTriangles()>& read,
+                           const ReaderLimits& limits) noexcept {
+  // The write end above the standard descriptors (a parent run with some of them closed may have
+  // been given one), and no other descriptor kept: another thread's load must see the end of its
+  // pipe when its own child ends, not when this one does.
+  const int fd = ::fcntl(pipeEnd, F_DUPFD, 3);
+  if (fd < 0) ::_exit(1);
+  ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
+  ::close_range(static_cast<unsigned>(fd) + 1, ~0u, 0);
   // A reader's own complaints (and a C++ runtime's last words) would mix into the parent's
   // output; the parent reports what happened in one line instead.
   if (const int devNull = ::open("/dev/null", O_WRONLY); devNull >= 0) {
@@ -105,28 +118,47 @@ void capAddressSpace(std::uint64_t budget) {
   try {
     const ReadTriangles t = read();
     const std::uint64_t header[4] = {t.vertices.size(), t.triangles.size(), t.lines, t.points};
-    const bool sent = writeAll(fd, &kTriangles, 1) && writeAll(fd, header, sizeof header) &&
+    const std::uint64_t length =
+        sizeof header + t.vertices.size() * sizeof(Vec3) + t.triangles.size() * sizeof(TriangleIndices);
+    const bool sent = writeAll(fd, &kTriangles, 1) && writeAll(fd, &length, sizeof length) &&
+                      writeAll(fd, header, sizeof header) &&
                       writeAll(fd, t.vertices.data(), t.vertices.size() * sizeof(Vec3)) &&
                       writeAll(fd, t.triangles.data(), t.triangles.size() * sizeof(TriangleIndices));
     ::_exit(sent ? 0 : 1);
   } catch (const InputError& e) {
     error = e.what();
   } catch (const std::bad_alloc&) {
+#ifdef ADSD_UNDER_SANITIZER
+    error = path + ": out of memory while loading the mesh (in assimp)";
+#else
     error = path + ": out of memory while loading the mesh (assimp asked for more than its limit of " +
             std::to_string(limits.memoryBytes >> 20) + " MiB)";
+#endif
   } catch (const std::exception& e) {
     error = path + ": cannot be parsed: " + e.what();
   } catch (...) {
     error = path + ": cannot be parsed: assimp's reader failed";
   }
-  const bool sent = writeAll(fd, &kError, 1) && writeAll(fd, error.data(), error.size());
+  const std::uint64_t length = error.size();
+  const bool sent = writeAll(fd, &kError, 1) && writeAll(fd, &length, sizeof length) &&
+                    writeAll(fd, error.data(), error.size());
   ::_exit(sent ? 0 : 1);
 }
 
-/// Reads the pipe to its end, or until \p deadline; false on the deadline.
-bool readUntilEnd(int fd, std::chrono::steady_clock::time_point deadline, std::string& out) {
+/// How many bytes the answer in \p bytes takes, head included, once its head has arrived.
+std::uint64_t frameSize(const std::string& bytes) {
+  if (bytes.size() < kFrameHead) return UINT64_MAX;
+  std::uint64_t length = 0;
+  std::memcpy(&length, bytes.data() + 1, sizeof length);
+  return length > UINT64_MAX - kFrameHead ? UINT64_MAX : kFrameHead + length;
+}
+
+/// Reads the pipe until the answer is complete or the pipe ends, or until \p deadline; false on
+/// the deadline.
+bool readAnswer(int fd, std::chrono::steady_clock::time_point deadline, std::string& out) {
   char buffer[1 << 16];
   for (;;) {
+    if (out.size() >= frameSize(out)) return true;
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return false;
     pollfd p{fd, POLLIN, 0};
@@ -141,29 +173,69 @@ bool readUntilEnd(int fd, std::chrono::steady_clock::time_point deadline, std::s
 }
 
 /// The child's answer, as runChild wrote it; \p complete is false when it was cut short.
-ReadTriangles decode(std::string_view bytes, bool& complete) {
+ReadTriangles decode(const std::string& all, bool& complete) {
   complete = false;
   ReadTriangles t;
-  if (bytes.empty()) return t;
-  if (bytes[0] == kError) throw InputError(std::string(bytes.substr(1)));
+  if (frameSize(all) != all.size()) return t;
+  const std::string_view bytes = std::string_view(all).substr(kFrameHead);
+  if (all[0] == kError) {
+    // One line, whatever a reader's exception said.
+    std::string message(bytes);
+    std::replace_if(message.begin(), message.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    throw InputError(message);
+  }
   std::uint64_t header[4];
-  if (bytes[0] != kTriangles || bytes.size() < 1 + sizeof header) return t;
-  std::memcpy(header, bytes.data() + 1, sizeof header);
-  const std::uint64_t payload = bytes.size() - 1 - sizeof header;
+  if (all[0] != kTriangles || bytes.size() < sizeof header) return t;
+  std::memcpy(header, bytes.data(), sizeof header);
+  const std::uint64_t payload = bytes.size() - sizeof header;
   if (header[0] > payload / sizeof(Vec3) || header[1] > payload / sizeof(TriangleIndices) ||
       header[0] * sizeof(Vec3) + header[1] * sizeof(TriangleIndices) != payload) {
     return t;
   }
-  const char* data = bytes.data() + 1 + sizeof header;
+  const char* data = bytes.data() + sizeof header;
+  // (An empty vector's data() may be null, which memcpy may not be given even for 0 bytes.)
   t.vertices.resize(header[0]);
-  std::memcpy(static_cast<void*>(t.vertices.data()), data, header[0] * sizeof(Vec3));
+  if (header[0] > 0) std::memcpy(static_cast<void*>(t.vertices.data()), data, header[0] * sizeof(Vec3));
   t.triangles.resize(header[1]);
-  std::memcpy(t.triangles.data(), data + header[0] * sizeof(Vec3), header[1] * sizeof(TriangleIndices));
+  if (header[1] > 0) {
+    std::memcpy(t.triangles.data(), data + header[0] * sizeof(Vec3), header[1] * sizeof(TriangleIndices));
+  }
   t.lines = header[2];
   t.points = header[3];
   complete = true;
   return t;
 }
+
+/// The child until it is waited for: closes the read end and, unless reaped, kills and waits for
+/// the child, whatever leaves readInChildProcess (std::bad_alloc while gathering a large answer).
+struct ChildGuard {
+  pid_t pid;
+  int readEnd;
+  bool reaped = false;
+  ChildGuard(const ChildGuard&) = delete;
+  ChildGuard& operator=(const ChildGuard&) = delete;
+  ~ChildGuard() {
+    closeReadEnd();
+    if (!reaped) {
+      ::kill(pid, SIGKILL);
+      wait();
+    }
+  }
+  void closeReadEnd() {
+    if (readEnd >= 0) ::close(readEnd);
+    readEnd = -1;
+  }
+  /// Waits for the child; its status, or none when it was reaped elsewhere (SIGCHLD ignored).
+  std::optional<int> wait() {
+    int status = 0;
+    pid_t waited;
+    do {
+      waited = ::waitpid(pid, &status, 0);
+    } while (waited < 0 && errno == EINTR);
+    reaped = true;
+    return waited == pid ? std::optional<int>(status) : std::nullopt;
+  }
+};
 
 std::string signalName(int signal) {
   const char* name = ::strsignal(signal);
@@ -184,8 +256,8 @@ ReaderLimits effectiveLimits(const ReaderLimits& limits, std::uint64_t fileBytes
 
 ReadTriangles readInChildProcess(const std::string& path, const std::function<ReadTriangles()>& read,
                                  const ReaderLimits& limits) {
-  // Close-on-exec: a child another thread of the program starts meanwhile must not hold the
-  // pipe's write end open, or the end of the file would never come.
+  // Close-on-exec, for a program another thread of this one may start meanwhile; children of
+  // other loads close what they inherit (runChild).
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) return read();
   const pid_t child = ::fork();
@@ -199,18 +271,17 @@ ReadTriangles readInChildProcess(const std::string& path, const std::function<Re
     runChild(fds[1], path, read, limits);
   }
   ::close(fds[1]);
+  ChildGuard guard{child, fds[0]};
   const auto deadline = std::chrono::steady_clock::now() +
                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                             std::chrono::duration<double>(std::min(limits.seconds, 1e7)));
   std::string bytes;
-  const bool finished = readUntilEnd(fds[0], deadline, bytes);
-  ::close(fds[0]);
+  const bool finished = readAnswer(fds[0], deadline, bytes);
+  guard.closeReadEnd();
   if (!finished) ::kill(child, SIGKILL);
-  int status = 0;
-  pid_t waited;
-  do {
-    waited = ::waitpid(child, &status, 0);
-  } while (waited < 0 && errno == EINTR);
+  // A parent that ignores SIGCHLD has its children reaped for it: no status then, and the
+  // answer alone decides (a crash reads as an answer cut short).
+  const std::optional<int> status = guard.wait();
   if (!finished) {
     std::ostringstream what;
     what.precision(3);
@@ -218,8 +289,8 @@ ReadTriangles readInChildProcess(const std::string& path, const std::function<Re
          << " s and was stopped (a damaged file can make some of its readers loop)";
     throw InputError(what.str());
   }
-  if (waited == child && WIFSIGNALED(status)) {
-    const int signal = WTERMSIG(status);
+  if (status && WIFSIGNALED(*status)) {
+    const int signal = WTERMSIG(*status);
     std::string what = path + ": assimp's reader crashed on the file (" + signalName(signal) +
                        "): it is damaged, or in a form assimp cannot read";
     if (signal == SIGKILL) what += " (or the system stopped it for lack of memory)";
@@ -229,7 +300,7 @@ ReadTriangles readInChildProcess(const std::string& path, const std::function<Re
   ReadTriangles t = decode(bytes, complete);
   if (!complete) {
     std::string what = path + ": assimp's reader stopped without an answer";
-    if (waited == child && WIFEXITED(status)) what += " (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
+    if (status && WIFEXITED(*status)) what += " (exit status " + std::to_string(WEXITSTATUS(*status)) + ")";
     throw InputError(what);
   }
   return t;
