@@ -141,11 +141,12 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
     }
     return "'" + name + "'";
   };
-  std::vector<std::string> found;
+  std::vector<std::string> found, seen;
   std::size_t more = 0;
   auto note = [&](std::string what) {
-    // An object split into parts may touch a link with several of them: named once.
-    if (std::find(found.begin(), found.end(), what) != found.end()) return;
+    // An object split into parts may touch a link with several of them: named, and counted, once.
+    if (std::find(seen.begin(), seen.end(), what) != seen.end()) return;
+    seen.push_back(what);
     if (found.size() < count) {
       found.push_back(std::move(what));
     } else {
@@ -167,7 +168,7 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
       note("links " + linkName(a) + " and " + linkName(b));
     }
   }
-  if (more > 0) found.push_back("and " + std::to_string(more) + " more pairs");
+  if (more > 0) found.push_back("and " + std::to_string(more) + (more == 1 ? " more pair" : " more pairs"));
   return found;
 }
 

@@ -69,7 +69,7 @@ TEST(ArmValidityChecker, PairsInContactNameTheLinkAndTheObstacle) {
   const double q[2] = {0.0, 0.0};
   si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
   EXPECT_EQ(checker->pairsInContact(s.get()), std::vector<std::string>{"link 'tip' and obstacle 'box'"});
-  EXPECT_EQ(checker->pairsInContact(s.get(), 0), std::vector<std::string>{"and 1 more pairs"});
+  EXPECT_EQ(checker->pairsInContact(s.get(), 0), std::vector<std::string>{"and 1 more pair"});
   // Turned away from the box: nothing touches.
   const double away[2] = {0.0, 3.14159265358979};
   si->getStateSpace()->as<ArmStateSpace>()->fromJoints(away, s.get());

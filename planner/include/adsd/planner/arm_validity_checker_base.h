@@ -71,7 +71,7 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
 
   /// \brief For messages: the checked pairs not separated by more than the safety margin at
   /// \p state, in checking order, as "links 'A' and 'B'" or "link 'A' and obstacle 'NAME'"; at most
-  /// \p count of them, then "and N more pairs". Empty when the state is free. Tests every pair
+  /// \p count of them, then "and N more pairs" ("pair" for one). Empty when the state is free. Tests every pair
   /// (no broad phase): not for a planner's inner loop.
   std::vector<std::string> pairsInContact(const ompl::base::State* state, std::size_t count = 3) const;
 
