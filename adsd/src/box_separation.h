@@ -59,13 +59,14 @@ inline OrientedBox placedBox(const OrientedBox& other, const Eigen::Matrix3d& ro
 /// boxes crossing at an angle, a hand's fingers, are apart only along such an axis, and without
 /// it a validity query on DRC-Hubo's fingers (dart-doc) opened 190 node pairs where FCL's root
 /// test decided (0.16 us against 15). Along L the gap is (|t.L| - reach) / |L|, with
-/// |L|^2 = 1 - c[i][j]^2; the division would magnify the roundoff of t.L (a few eps |t|), so axes
-/// within 7 degrees of parallel (|L| < 1/8) are skipped: the rest stay within the 64 eps of the
-/// scene's magnitude that the caller's bound allows, and nearly parallel edges are the face
-/// axes' case anyway.
+/// |L|^2 = 1 - c[i][j]^2. The gap's roundoff is that of the c entries (a few eps each) times |t|
+/// and the half extents (up to the scene's magnitude M), some 24 eps M in all, and the division
+/// magnifies it by 1 / |L|: axes within 30 degrees of parallel (|L| < 1/2) are skipped, so that
+/// the rest stay within the 64 eps M the caller's bound allows. Nearly parallel edges are the
+/// face axes' case anyway.
 inline bool edgeAxesApart(const double t[3], const double c[3][3], const double absC[3][3], const double ha[3],
                           const double hb[3], double bound2) {
-  constexpr double kMinAxisLength2 = 1.0 / 64.0;
+  constexpr double kMinAxisLength2 = 1.0 / 4.0;
   for (int i = 0; i < 3; ++i) {
     const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
