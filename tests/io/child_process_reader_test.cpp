@@ -16,6 +16,7 @@
 
 #include "adsd/error.h"
 #include "child_process_reader.h"
+#include "sanitizer_build.h"
 
 namespace adsd::io::detail {
 namespace {
@@ -90,13 +91,7 @@ TEST(ChildProcessReader, EndlessReaderIsStoppedAtTheLimit) {
 }
 
 TEST(ChildProcessReader, RunawayAllocationIsOutOfMemory) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  GTEST_SKIP() << "the memory limit is not applied under a sanitizer";
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-  GTEST_SKIP() << "the memory limit is not applied under a sanitizer";
-#endif
-#endif
+  if (adsd::test::kUnderSanitizer) GTEST_SKIP() << "the memory limit is not applied under a sanitizer";
   const std::string big = failureOf([]() -> ReadTriangles {
     std::vector<char> block(std::size_t{1} << 30, 1);
     ReadTriangles t;

@@ -19,6 +19,7 @@
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
 #include "temp_dir.h"
+#include "sanitizer_build.h"
 
 namespace adsd::io {
 namespace {
@@ -518,13 +519,7 @@ TEST(LoadMeshBadInput, AssimpLoopingOnADamagedFileIsStoppedAtTheTimeLimit) {
 }
 
 TEST(LoadMeshBadInput, AssimpOverItsMemoryLimitIsRefused) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  GTEST_SKIP() << "the memory limit is not applied under a sanitizer";
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-  GTEST_SKIP() << "the memory limit is not applied under a sanitizer";
-#endif
-#endif
+  if (adsd::test::kUnderSanitizer) GTEST_SKIP() << "the memory limit is not applied under a sanitizer";
   TempDir dir;
   // 64 MB of comment: assimp holds the whole file in memory, far more than the first limit
   // allows. (Above glibc's largest mmap threshold, 32 MB, so that the buffer is always a new
