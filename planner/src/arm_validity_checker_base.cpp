@@ -141,17 +141,10 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
     }
     return "'" + name + "'";
   };
-  std::vector<std::string> found, seen;
-  std::size_t more = 0;
+  // Every pair in contact, each once: an object split into parts may touch a link with several.
+  std::vector<std::string> found;
   auto note = [&](std::string what) {
-    // An object split into parts may touch a link with several of them: named, and counted, once.
-    if (std::find(seen.begin(), seen.end(), what) != seen.end()) return;
-    seen.push_back(what);
-    if (found.size() < count) {
-      found.push_back(std::move(what));
-    } else {
-      ++more;
-    }
+    if (std::find(found.begin(), found.end(), what) == found.end()) found.push_back(std::move(what));
   };
   const Pose identity = Pose::Identity();
   for (std::size_t b = 0; b < linkOfBody_.size(); ++b) {
@@ -168,7 +161,11 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
       note("links " + linkName(a) + " and " + linkName(b));
     }
   }
-  if (more > 0) found.push_back("and " + std::to_string(more) + (more == 1 ? " more pair" : " more pairs"));
+  if (found.size() > count) {
+    const std::size_t more = found.size() - count;
+    found.resize(count);
+    found.push_back("and " + std::to_string(more) + (more == 1 ? " more pair" : " more pairs"));
+  }
   return found;
 }
 
