@@ -101,6 +101,14 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   requireFile(file.requestPath, file.requestLocation, "request file");
   auto model = std::make_shared<ArmModel>(readUrdf(file.robotPath, file.packagePath));
   model_ = model;
+  // A URDF with <visual> geometry only (dart-doc's test robots, a description stripped for a
+  // viewer) plans as if nothing could collide; say so rather than report a path that is
+  // "collision-free" by default.
+  if (std::none_of(model_->links.begin(), model_->links.end(), [](const ArmLink& l) { return l.collision.has_value(); })) {
+    warnings_.push_back(file.robotPath + ": robot '" + model_->name +
+                        "' has no <collision> geometry on any link (its <visual> geometry is not checked, as in "
+                        "MoveIt): no state is in collision");
+  }
   const PlanningSceneYaml sceneFile = readPlanningSceneYaml(file.scenePath);
   const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);
   allowedPlanningTime_ = request.allowedPlanningTime;

@@ -463,6 +463,37 @@ TEST(ArmPlanningProblem, ZeroToleranceGetsTheFloor) {
   EXPECT_EQ(p.goalThreshold(), kArmGoalThresholdFloor);
 }
 
+// A URDF with <visual> geometry only (as dart-doc's test robots) plans as if nothing could collide:
+// the problem says so instead of reporting a path that is collision-free by default.
+TEST(ArmPlanningProblem, RobotWithoutCollisionGeometryIsWarnedOf) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "visual_only.urdf")
+      << "<robot name='visual_only'>\n"
+         "  <link name='base'><visual><geometry><box size='0.1 0.1 0.1'/></geometry></visual></link>\n"
+         "  <link name='arm'><visual><geometry><box size='0.5 0.1 0.1'/></geometry></visual></link>\n"
+         "  <joint name='turn' type='revolute'><parent link='base'/><child link='arm'/>\n"
+         "    <axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
+         "</robot>\n";
+  std::ofstream(dir / "request.yaml") << "group_name: arm\nstart_state:\n  joint_state:\n    name: [turn]\n    position: [0]\n"
+                                         "goal_constraints:\n  - joint_constraints:\n"
+                                         "      - {joint_name: turn, position: 0.5, tolerance_above: 0.01, "
+                                         "tolerance_below: 0.01}\n";
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = visual_only.urdf\nscene = "
+                                     << kArmProblems << "/kr5_table_pick/scene.yaml\nrequest = request.yaml\n";
+  const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
+  std::string warning;
+  for (const std::string& w : p.warnings()) {
+    if (w.find("has no <collision> geometry") != std::string::npos) warning = w;
+  }
+  EXPECT_EQ(warning, (dir / "visual_only.urdf").string() + ": robot 'visual_only' has no <collision> geometry on any "
+                     "link (its <visual> geometry is not checked, as in MoveIt): no state is in collision");
+  // A robot with collision geometry gets no such warning.
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const ArmPlanningProblem kr5(problemWith(dir, readAll(kArmProblems + "/kr5_table_pick/scene.yaml"), shippedRequest()),
+                               CheckingOptions{});
+  for (const std::string& w : kr5.warnings()) EXPECT_EQ(w.find("<collision>"), std::string::npos) << w;
+}
+
 // The slot problems are reached through the slot: start and goal valid (the constructor checks
 // them), the straight joint-space motion between them collides (dense states, 1/1000 of the
 // motion apart), and RRTConnect solves them (wam_slot was once unsolvable: problems/arm/README.md).
