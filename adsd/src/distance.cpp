@@ -60,14 +60,16 @@ void validate(const DistanceOptions& o, const Pose& poseA, const Pose& poseB) {
 
 Query::Query(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB, const DistanceOptions& options,
              DistanceScratch::Buffers& buffers)
-    : a_(a), b_(b), poseA_(poseA), options_(options), buf_(buffers) {
+    : a_(a), b_(b), poseA_(poseA), poseB_(poseB), options_(options), buf_(buffers) {}
+
+void Query::placeFrames() {
   // Mesh A's frame is the working frame: A needs no transform, and B's pose relative to A keeps
   // translations that are large but common to both poses out of the arithmetic.
-  const Eigen::Matrix3d rA = poseA.linear();
-  rotationBA_ = rA.transpose() * poseB.linear();
-  translationBA_ = rA.transpose() * (poseB.translation() - poseA.translation());
+  const Eigen::Matrix3d rA = poseA_.linear();
+  rotationBA_ = rA.transpose() * poseB_.linear();
+  translationBA_ = rA.transpose() * (poseB_.translation() - poseA_.translation());
   rotationAB_ = rotationBA_.transpose();
-  magnitude_ = std::sqrt(3.0) * (a.maxAbsCoordinate() + b.maxAbsCoordinate()) + translationBA_.norm();
+  magnitude_ = std::sqrt(3.0) * (a_.maxAbsCoordinate() + b_.maxAbsCoordinate()) + translationBA_.norm();
   roundoff_ = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude_;
 }
 
@@ -220,6 +222,14 @@ void Query::startFromWitnessHint() {
 }
 
 DistanceResult Query::run() {
+  // A planner checks most states far from the obstacles, where a validity query ends at the
+  // roots' spheres: decided before B is placed in A's frame, and before the first upper bound,
+  // the witness hint and the traversal's set-up, it costs a fifth less (bench_bands, far band).
+  if (options_.mode == QueryMode::threshold && a_.hierarchy() != nullptr && b_.hierarchy() != nullptr) {
+    DistanceResult apart;
+    if (rootSpheresApart(apart)) return apart;
+  }
+  placeFrames();
   const std::uint32_t nA = static_cast<std::uint32_t>(a_.triangleCount());
   const std::uint32_t nB = static_cast<std::uint32_t>(b_.triangleCount());
   // First search vector: from a corner of B to a corner of A (any non-zero guess of a - b). The

@@ -100,6 +100,12 @@ class Query {
   DistanceResult run();
 
  private:
+  /// Places B in A's frame (rotationBA_, translationBA_, ...) and sets the roundoff allowance.
+  void placeFrames();
+  /// A validity query between two meshes with trees whose roots' circumscribed spheres are
+  /// farther apart than the threshold (most of a planner's checks far from obstacles): true, with
+  /// the result in \p out, decided in the world frame before placeFrames (tree_traversal.cpp).
+  bool rootSpheresApart(DistanceResult& out) const;
   DistanceResult finish() const;
   /// Offers the distance of the triangles that answered the last query between these meshes
   /// (WitnessHint), when the scratch has them.
@@ -208,7 +214,9 @@ class Query {
   // The triangle permutations the sub-meshes are ranges of (the trees' or the scratch buffers').
   const std::uint32_t* orderA_ = nullptr;
   const std::uint32_t* orderB_ = nullptr;
-  const Pose poseA_;
+  // The caller's poses: a Query lives within one distance() call.
+  const Pose& poseA_;
+  const Pose& poseB_;
   const DistanceOptions options_;
   DistanceScratch::Buffers& buf_;
   Eigen::Matrix3d rotationBA_;   // B frame -> A frame

@@ -168,6 +168,33 @@ double Query::pruneBound() const {
   return best_;
 }
 
+bool Query::rootSpheresApart(DistanceResult& out) const {
+  const OrientedBox& rootA = a_.hierarchy()->nodes()[0].box;
+  const OrientedBox& rootB = b_.hierarchy()->nodes()[0].box;
+  // traverseTrees' first test of a validity query, in the world frame: each centre placed by its
+  // own pose is a few ulps of the largest coordinate involved off, which this allowance (the one
+  // placeFrames sets, for the world's coordinates: a box centre lies within sqrt(3)
+  // max|coordinate| of its mesh's origin) covers many times over.
+  const double magnitude =
+      std::sqrt(3.0) * (a_.maxAbsCoordinate() + b_.maxAbsCoordinate() + poseA_.translation().cwiseAbs().maxCoeff() +
+                        poseB_.translation().cwiseAbs().maxCoeff());
+  const double allowance = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude;
+  const double sphereGap = (poseA_ * rootA.center - poseB_ * rootB.center).norm() - rootA.radius - rootB.radius;
+  if (!(sphereGap > options_.threshold + allowance)) return false;
+  // What run() answers when the traversal drops the roots: the first corners' distance as the
+  // upper bound (a real distance, larger than the spheres' gap), the threshold as the lower.
+  out = DistanceResult{};
+  out.witnessA = poseA_ * a_.corner(0, 0);
+  out.witnessB = poseB_ * b_.corner(0, 0);
+  out.distance = out.upper = (out.witnessA - out.witnessB).norm();
+  out.lower = options_.threshold;
+  out.triangleA = out.triangleB = 0;
+  out.status = DistanceStatus::aboveThreshold;
+  out.counters.subMeshPairs = 1;
+  out.counters.pairsRejectedByBounds = 1;
+  return true;
+}
+
 void Query::traverseTrees() {
   const std::vector<MeshHierarchy::Node>& nodesA = treeA_->nodes();
   const std::vector<MeshHierarchy::Node>& nodesB = treeB_->nodes();

@@ -502,6 +502,58 @@ TEST(MeshDistance, BoxesApartOnlyAlongAnEdgeAxisEndAValidityQueryAtTheRoots) {
   EXPECT_NEAR(within.distance, truth.value, 1e-12);
 }
 
+// A validity query whose roots' spheres are apart by more than the threshold is decided in the
+// world frame, before B is placed in A's frame (Query::rootSpheresApart): the answer must be the
+// one the traversal gives, a real distance between two mesh points above the threshold with the
+// threshold as its lower bound, under a large translation common to both poses as well. Thresholds
+// between the spheres' gap and the distance, and beyond it, go on to the traversal and its
+// answers.
+TEST(MeshDistance, ValidityQueryDecidedAtTheRootSpheresKeepsItsPromises) {
+  Mesh a = shapes::knottedTube(1.0, 0.2, 2, 3, 96, 12);
+  Mesh b = shapes::torus(1.0, 0.3, 48, 16);
+  a.buildHierarchy();
+  b.buildHierarchy();
+  const double radiusA = a.hierarchy()->nodes()[0].box.radius, radiusB = b.hierarchy()->nodes()[0].box.radius;
+  for (const double offset : {0.0, 1e5}) {
+    SCOPED_TRACE(offset);
+    const Vec3 common(offset, -offset, 0.5 * offset);
+    const Pose poseA = Eigen::Translation3d(common) * Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized());
+    const Pose poseB = Eigen::Translation3d(common + Vec3(radiusA + radiusB + 0.5, 0.7, -0.2)) *
+                       Eigen::AngleAxisd(-1.1, Vec3(0, 1, 1).normalized());
+    const double sphereGap = (poseA * a.hierarchy()->nodes()[0].box.center - poseB * b.hierarchy()->nodes()[0].box.center).norm() -
+                             radiusA - radiusB;
+    ASSERT_GT(sphereGap, 0.1);
+    const oracle::MeshPairDistance truth = oracle::meshDistance(a, poseA, b, poseB);
+    ASSERT_GT(truth.value, sphereGap);
+    for (const double threshold : {0.0, 0.5 * sphereGap, 0.999 * sphereGap}) {
+      SCOPED_TRACE(threshold);
+      const DistanceResult r = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(threshold));
+      EXPECT_EQ(r.status, DistanceStatus::aboveThreshold);
+      EXPECT_EQ(r.lower, threshold);
+      EXPECT_EQ(r.counters.subMeshPairs, 1u);
+      EXPECT_GE(r.distance, truth.value - kPromisedAccuracy * (1.0 + offset));
+      EXPECT_EQ(r.upper, r.distance);
+      EXPECT_NEAR(r.distance, (r.witnessA - r.witnessB).norm(), 1e-12 * (1.0 + offset));
+      // The witnesses are corners of the triangles named.
+      ASSERT_GE(r.triangleA, 0);
+      ASSERT_GE(r.triangleB, 0);
+      double offA = std::numeric_limits<double>::infinity(), offB = offA;
+      for (int k = 0; k < 3; ++k) {
+        offA = std::min(offA, (poseA * a.corner(static_cast<std::size_t>(r.triangleA), k) - r.witnessA).norm());
+        offB = std::min(offB, (poseB * b.corner(static_cast<std::size_t>(r.triangleB), k) - r.witnessB).norm());
+      }
+      EXPECT_LE(offA, 1e-12 * (1.0 + offset));
+      EXPECT_LE(offB, 1e-12 * (1.0 + offset));
+    }
+    // Past the spheres' gap the traversal decides, on both sides of the distance.
+    const DistanceResult below = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(0.5 * (sphereGap + truth.value)));
+    EXPECT_EQ(below.status, DistanceStatus::aboveThreshold);
+    const DistanceResult beyond = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(truth.value * 1.001));
+    EXPECT_EQ(beyond.status, DistanceStatus::withinThreshold);
+    EXPECT_LE(beyond.distance, truth.value * 1.001);
+  }
+}
+
 }  // namespace
 /// Two parallel triangles s across, their corners s and 2 s along the axes: s / sqrt(3) apart.
 /// At s = 1e-55 the face test's sixth power of lengths underflowed to 0, and 0 >= 0 proved the
