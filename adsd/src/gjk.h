@@ -45,7 +45,9 @@ enum class GjkOutcome {
 };
 
 /// Why the loop stopped, for the record (the issue asks that the result say which test fired).
-enum class GjkStop { converged, duplicateSupport, noProgress, iterationCap, originEnclosed, originReached, skipTest };
+enum class GjkStop {
+  converged, duplicateSupport, noProgress, iterationCap, originEnclosed, originReached, skipTest, hopeless
+};
 
 struct GjkResult {
   GjkOutcome outcome = GjkOutcome::overlapping;
@@ -74,10 +76,13 @@ struct GjkResult {
 /// largest |coordinate| of either set (it scales the roundoff allowance kBoundSafetyUlps).
 /// `relativeGap`: the loop stops once the lower bound is within this fraction of |v|; 0 runs it
 /// to convergence (a repeated support point, or no more progress), for callers that need the
-/// hulls' distance itself (convex_pair.cpp).
+/// hulls' distance itself (convex_pair.cpp). `hopelessBelow`: the loop stops once the simplex is
+/// that near the origin (|v| bounds the hulls' distance from above, so no later support plane can
+/// prove them farther apart), for callers that only want to prove a pair beyond that distance.
 template <class SupportA, class SupportB, class SkipTest>
 GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start, const SkipTest& skip,
-                 double magnitude, double relativeGap = tolerance::kGjkRelativeGap) {
+                 double magnitude, double relativeGap = tolerance::kGjkRelativeGap,
+                 double hopelessBelow = -std::numeric_limits<double>::infinity()) {
   const double roundoff = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude;
   const double touch2 = tolerance::kGjkTouchRelative2 * magnitude * magnitude;
   GjkResult r;
@@ -155,6 +160,10 @@ GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start,
       break;
     }
     v = s.closest;
+    if (v.norm() <= hopelessBelow) {
+      r.stop = GjkStop::hopeless;
+      break;
+    }
   }
   if (r.iterations > tolerance::kGjkMaxIterations) r.iterations = tolerance::kGjkMaxIterations;
 

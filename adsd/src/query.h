@@ -169,12 +169,15 @@ class Query {
                            const std::uint32_t* orderB, std::uint32_t b0, std::uint32_t b1);
   /// GJK on the sub-meshes of tree nodes \p a and \p b (sec. 4), supports by branch and bound
   /// over their subtrees (nodeSupport, each search warmed by the last support point), stopping
-  /// when \p stop accepts the lower bound (minus roundoff) or at \p relativeGap; counts the run
-  /// and offers the closest support points found.
-  GjkResult gjkOnNodes(std::int32_t a, std::int32_t b, const std::function<bool(double)>& stop, double relativeGap);
+  /// when \p stop accepts the lower bound (minus roundoff), at \p relativeGap, or once the
+  /// simplex is within \p hopelessBelow of the origin (runGjk); counts the run and offers the
+  /// closest support points found.
+  GjkResult gjkOnNodes(std::int32_t a, std::int32_t b, const std::function<bool(double)>& stop, double relativeGap,
+                       double hopelessBelow = -std::numeric_limits<double>::infinity());
   /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
   /// margin and offers the closest support points as an upper bound. Stops once the margin proves
-  /// the pair farther than \p bound, or after a few iterations. Returns the margin (- roundoff).
+  /// the pair farther than \p bound, once the hulls are proven within \p bound (no margin can
+  /// then prove it), or after a few iterations. Returns the margin (- roundoff).
   double hullBound(std::int32_t a, std::int32_t b, double bound);
 
   // --- the mode's rules ---
