@@ -3,9 +3,11 @@
 # system-wide, for the benchmarks and demos. The meshes are never committed: the CGAL data and the
 # Stanford dragon have their own terms, and they are large.
 #
-#   problems/data/fetch_meshes.sh [--dir DIR] [--force] [--check TOOL]
+#   problems/data/fetch_meshes.sh [--dir DIR] [--others] [--force] [--check TOOL]
 #
 #   --dir DIR     cache directory (default: ${ADSD_DATA_DIR:-$HOME/.cache/adsd/meshes})
+#   --others      also the 38 CGAL meshes of bench/run_other_meshes.sh (about 19 MB), models no
+#                 benchmark or tuning of the library used before it
 #   --force       fetch again even what is already cached
 #   --check TOOL  after fetching, load every file with TOOL and print what it reports; TOOL is a
 #                 program taking one mesh path (the benchmarks' `bench_mesh_info`, which reads
@@ -23,10 +25,16 @@
 set -euo pipefail
 
 readonly CGAL_MESHES=(cow bear camel armadillo bunny00 knot elephant man)
+# bench/run_other_meshes.sh's pairs, in its order (--others).
+readonly OTHER_CGAL_MESHES=(homer bull dino triceratops femur hand fandisk rotor_small lion elk mushroom
+  anchor_dense turbine blade ChineseDragon-10kv diplodocus cheese mannequin-devil holes knot2 ALSTOM_TEST4
+  boeing cylinder handle mask_cone horizons three_peaks couplingdown knot1 retinal b9_mesh mech-holes-shark
+  fandisk_large polygon_mesh refined_elephant bear_bis cylinder_locally_refined lion-head)
 readonly DRAGON_LEVELS=(res4 res3)
 
 cache_dir="${ADSD_DATA_DIR:-$HOME/.cache/adsd/meshes}"
 force=0
+others=0
 check_tool=""
 
 die() { echo "fetch_meshes.sh: error: $*" >&2; exit 1; }
@@ -36,8 +44,9 @@ while [[ $# -gt 0 ]]; do
   case "$1" in
     --dir) [[ $# -ge 2 ]] || die "--dir needs a directory"; cache_dir="$2"; shift 2 ;;
     --force) force=1; shift ;;
+    --others) others=1; shift ;;
     --check) [[ $# -ge 2 ]] || die "--check needs a program"; check_tool="$2"; shift 2 ;;
-    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) die "unknown argument '$1' (see --help)" ;;
   esac
 done
@@ -69,10 +78,11 @@ apt_knows_cgal() {
 }
 
 fetch_cgal() {
-  local missing=()
-  for m in "${CGAL_MESHES[@]}"; do needs "$m.off" && missing+=("$m"); done
+  local wanted=("${CGAL_MESHES[@]}") missing=()
+  [[ $others -eq 1 ]] && wanted+=("${OTHER_CGAL_MESHES[@]}")
+  for m in "${wanted[@]}"; do needs "$m.off" && missing+=("$m"); done
   if [[ ${#missing[@]} -eq 0 ]]; then
-    say "CGAL meshes already cached (${CGAL_MESHES[*]})"
+    say "CGAL meshes already cached (${#wanted[@]}: ${CGAL_MESHES[*]}$([[ $others -eq 1 ]] && echo ' and the others'))"
     return
   fi
   command -v apt-get >/dev/null || die "apt-get not found: the CGAL meshes come from Debian's libcgal-demo package"
@@ -169,6 +179,9 @@ fetch_dragon
 say "cache: $cache_dir"
 files=()
 for m in "${CGAL_MESHES[@]}"; do files+=("$cache_dir/$m.off"); done
+if [[ $others -eq 1 ]]; then
+  for m in "${OTHER_CGAL_MESHES[@]}"; do files+=("$cache_dir/$m.off"); done
+fi
 files+=("$cache_dir/bunny.off")
 for r in "${DRAGON_LEVELS[@]}"; do files+=("$cache_dir/dragon_$r.ply"); done
 
