@@ -179,8 +179,10 @@ bool Query::rootSpheresApart(DistanceResult& out) const {
       std::sqrt(3.0) * (a_.maxAbsCoordinate() + b_.maxAbsCoordinate() + poseA_.translation().cwiseAbs().maxCoeff() +
                         poseB_.translation().cwiseAbs().maxCoeff());
   const double allowance = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude;
-  const double sphereGap = (poseA_ * rootA.center - poseB_ * rootB.center).norm() - rootA.radius - rootB.radius;
-  if (!(sphereGap > options_.threshold + allowance)) return false;
+  // Compared squared: a checker whose robot moves inside its environment's sphere fails this test
+  // on every call, and should not pay a square root for it.
+  const double reach = rootA.radius + rootB.radius + options_.threshold + allowance;
+  if (!((poseA_ * rootA.center - poseB_ * rootB.center).squaredNorm() > reach * reach)) return false;
   // What run() answers when the traversal drops the roots: the first corners' distance as the
   // upper bound (a real distance, larger than the spheres' gap), the threshold as the lower.
   out = DistanceResult{};
