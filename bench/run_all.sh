@@ -317,8 +317,9 @@ elif [[ -d bench/results ]]; then
 fi
 # The stress tables are the numerics suite's (tests/stress: the soak and a run of the current core,
 # pasted into docs/numerics.md), and prm_thin_wall_repeat*.md two repeats of one planning command
-# that docs/benchmarks.md quotes (how far PRM's rows swing); keep them.
-for kept in bench/results/stress*.txt bench/results/prm_thin_wall_repeat*.md; do
+# that docs/benchmarks.md quotes (how far PRM's rows swing), and other_meshes.* the output of
+# bench/run_other_meshes.sh (its own command, pasted by hand); keep them.
+for kept in bench/results/stress*.txt bench/results/prm_thin_wall_repeat*.md bench/results/other_meshes.*; do
   [[ -f "$kept" ]] && cp "$kept" "$staging/"
 done
 echo "=== total: $((SECONDS - started)) s" >>"$log"
