@@ -160,7 +160,7 @@ GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start,
       break;
     }
     v = s.closest;
-    if (v.norm() <= hopelessBelow) {
+    if (hopelessBelow >= 0.0 && v.squaredNorm() <= hopelessBelow * hopelessBelow) {
       r.stop = GjkStop::hopeless;
       break;
     }

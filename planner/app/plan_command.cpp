@@ -301,7 +301,8 @@ int planArm(const PlanArguments& a) {
                 "what --objective clearance maximizes), certified >= %.6g m along the path\n",
                 obstacles.min, obstacles.mean, obstacles.certifiedMin);
   } else {
-    std::printf("obstacles   none measured: %s\n", problem.scene().environment.empty() ? "none in the scene" : "no link has collision geometry");
+    std::printf("obstacles   none measured: %s\n",
+                problem.scene().environment.empty() ? "none in the scene" : "no link has collision geometry");
   }
   if (a.pathFile) {
     std::vector<std::string> joints;

@@ -287,6 +287,7 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
   j.name = uj.name;
   j.parentLink = parentLink;
   j.childLink = childLink;
+  if (uj.mimic) j.mimics = uj.mimic->joint_name;
   const std::string where = urdfPath + ":" + std::to_string(outline.jointLine.at(j.name)) + ": joint '" + j.name + "'";
   const urdf::Vector3& at = uj.parent_to_joint_origin_transform.position;
   const Vec3 offset(at.x, at.y, at.z);

@@ -104,10 +104,19 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   // A URDF with <visual> geometry only (dart-doc's test robots, a description stripped for a
   // viewer) plans as if nothing could collide; say so rather than report a path that is
   // "collision-free" by default.
-  if (std::none_of(model_->links.begin(), model_->links.end(), [](const ArmLink& l) { return l.collision.has_value(); })) {
+  const auto hasCollision = [](const ArmLink& l) { return l.collision.has_value(); };
+  if (std::none_of(model_->links.begin(), model_->links.end(), hasCollision)) {
     warnings_.push_back(file.robotPath + ": robot '" + model_->name +
                         "' has no <collision> geometry on any link (its <visual> geometry is not checked, as in "
                         "MoveIt): no state is in collision");
+  }
+  // MoveIt moves a mimic joint with the joint it names; here it is planned on its own, so a path
+  // may hold a gripper's two fingers apart where the real ones cannot be.
+  for (const ArmJoint& j : model_->joints) {
+    if (!j.mimics.empty() && j.active >= 0) {
+      warnings_.push_back(file.robotPath + ": joint '" + j.name + "' mimics joint '" + j.mimics +
+                          "': mimic joints are planned as independent joints (the start state needs its position)");
+    }
   }
   const PlanningSceneYaml sceneFile = readPlanningSceneYaml(file.scenePath);
   const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);

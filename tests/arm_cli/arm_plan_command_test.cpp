@@ -474,7 +474,8 @@ TEST(ArmPlanningProblem, RobotWithoutCollisionGeometryIsWarnedOf) {
          "  <joint name='turn' type='revolute'><parent link='base'/><child link='arm'/>\n"
          "    <axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
          "</robot>\n";
-  std::ofstream(dir / "request.yaml") << "group_name: arm\nstart_state:\n  joint_state:\n    name: [turn]\n    position: [0]\n"
+  std::ofstream(dir / "request.yaml") << "group_name: arm\n"
+                                         "start_state:\n  joint_state:\n    name: [turn]\n    position: [0]\n"
                                          "goal_constraints:\n  - joint_constraints:\n"
                                          "      - {joint_name: turn, position: 0.5, tolerance_above: 0.01, "
                                          "tolerance_below: 0.01}\n";
@@ -492,6 +493,42 @@ TEST(ArmPlanningProblem, RobotWithoutCollisionGeometryIsWarnedOf) {
   const ArmPlanningProblem kr5(problemWith(dir, readAll(kArmProblems + "/kr5_table_pick/scene.yaml"), shippedRequest()),
                                CheckingOptions{});
   for (const std::string& w : kr5.warnings()) EXPECT_EQ(w.find("<collision>"), std::string::npos) << w;
+}
+
+// A <mimic> joint (a gripper's second finger) is not made to follow the joint it names: the problem
+// says it is planned on its own, and the start state must give its position.
+TEST(ArmPlanningProblem, MimicJointIsWarnedOf) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "gripper.urdf")
+      << "<robot name='gripper'>\n"
+         "  <link name='palm'><collision><geometry><box size='0.1 0.1 0.02'/></geometry></collision></link>\n"
+         "  <link name='left'><collision><geometry><box size='0.01 0.01 0.05'/></geometry></collision></link>\n"
+         "  <link name='right'><collision><geometry><box size='0.01 0.01 0.05'/></geometry></collision></link>\n"
+         "  <joint name='left_finger' type='prismatic'><parent link='palm'/><child link='left'/>\n"
+         "    <origin xyz='0.02 0 0.04'/><axis xyz='1 0 0'/><limit lower='0' upper='0.03' effort='1' velocity='1'/>"
+         "</joint>\n"
+         "  <joint name='right_finger' type='prismatic'><parent link='palm'/><child link='right'/>\n"
+         "    <origin xyz='-0.02 0 0.04'/><axis xyz='-1 0 0'/><limit lower='0' upper='0.03' effort='1' velocity='1'/>"
+         "<mimic joint='left_finger'/></joint>\n"
+         "</robot>\n";
+  std::ofstream(dir / "request.yaml") << "group_name: hand\n"
+                                         "start_state:\n  joint_state:\n    name: [left_finger, right_finger]\n"
+                                         "    position: [0, 0]\n"
+                                         "goal_constraints:\n  - joint_constraints:\n"
+                                         "      - {joint_name: left_finger, position: 0.02, tolerance_above: 0.001, "
+                                         "tolerance_below: 0.001}\n";
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = gripper.urdf\nscene = "
+                                     << kArmProblems << "/kr5_table_pick/scene.yaml\nrequest = request.yaml\n";
+  const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
+  EXPECT_EQ(p.model().dof(), 2u);
+  std::vector<std::string> mimicWarnings;
+  for (const std::string& w : p.warnings()) {
+    if (w.find("mimic") != std::string::npos) mimicWarnings.push_back(w);
+  }
+  ASSERT_EQ(mimicWarnings.size(), 1u);
+  EXPECT_EQ(mimicWarnings[0], (dir / "gripper.urdf").string() +
+                                  ": joint 'right_finger' mimics joint 'left_finger': mimic joints are planned as "
+                                  "independent joints (the start state needs its position)");
 }
 
 // The slot problems are reached through the slot: start and goal valid (the constructor checks

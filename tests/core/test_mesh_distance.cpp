@@ -520,8 +520,9 @@ TEST(MeshDistance, ValidityQueryDecidedAtTheRootSpheresKeepsItsPromises) {
     const Pose poseA = Eigen::Translation3d(common) * Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized());
     const Pose poseB = Eigen::Translation3d(common + Vec3(radiusA + radiusB + 0.5, 0.7, -0.2)) *
                        Eigen::AngleAxisd(-1.1, Vec3(0, 1, 1).normalized());
-    const double sphereGap = (poseA * a.hierarchy()->nodes()[0].box.center - poseB * b.hierarchy()->nodes()[0].box.center).norm() -
-                             radiusA - radiusB;
+    const Vec3 centreA = poseA * a.hierarchy()->nodes()[0].box.center;
+    const Vec3 centreB = poseB * b.hierarchy()->nodes()[0].box.center;
+    const double sphereGap = (centreA - centreB).norm() - radiusA - radiusB;
     ASSERT_GT(sphereGap, 0.1);
     const oracle::MeshPairDistance truth = oracle::meshDistance(a, poseA, b, poseB);
     ASSERT_GT(truth.value, sphereGap);
@@ -546,7 +547,8 @@ TEST(MeshDistance, ValidityQueryDecidedAtTheRootSpheresKeepsItsPromises) {
       EXPECT_LE(offB, 1e-12 * (1.0 + offset));
     }
     // Past the spheres' gap the traversal decides, on both sides of the distance.
-    const DistanceResult below = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(0.5 * (sphereGap + truth.value)));
+    const DistanceResult below =
+        distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(0.5 * (sphereGap + truth.value)));
     EXPECT_EQ(below.status, DistanceStatus::aboveThreshold);
     const DistanceResult beyond = distance(a, poseA, b, poseB, DistanceOptions::aboveThreshold(truth.value * 1.001));
     EXPECT_EQ(beyond.status, DistanceStatus::withinThreshold);

@@ -32,6 +32,9 @@ struct ArmJoint {
   double upper = 0.0;  ///< radians or metres; +pi for a continuous joint
   /// Position of this joint in the joint vector, or -1 for a fixed joint.
   int active = -1;
+  /// The joint its URDF <mimic> names, or empty. Such a joint is not made to follow it: it is a
+  /// coordinate of the joint vector like any other (ArmPlanningProblem warns of it).
+  std::string mimics;
 };
 
 /// \brief One link: its name, the joint that carries it, and its collision geometry.
