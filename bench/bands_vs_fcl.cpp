@@ -21,6 +21,14 @@
 /// | uniform   | planning problems: uniform states over the environment's box (valid or not) |
 /// | collision | in contact (FCL's collide): validity only, the distance modes answer 0      |
 ///
+/// Two more bands run only when --bands names them (the default run, and the issue's figures, are
+/// the five above; drawn after them, so naming them leaves the five's poses unchanged):
+///
+/// | band      | how the poses are drawn                                                     |
+/// |-----------|-----------------------------------------------------------------------------|
+/// | touching  | gaps log-uniform in [1e-6, 1e-3] of L: grazing contact, below the near band |
+/// | distant   | gaps log-uniform in [1, 10] × L: beyond the far band                        |
+///
 /// Mesh pairs approach along a random line (close_poses.h, without its hull-overlap filter: far
 /// pairs' hulls are apart); a problem's robot slides from a random state until its clearance is
 /// the target (near_obstacle_poses.h). Every exact answer must agree with FCL's within 1e-9 L and
@@ -87,6 +95,8 @@ constexpr double kRelativeTolerance = 0.01;
 /// Largest disagreement with FCL's exact distance, as a fraction of L, before the run fails: both
 /// are exact to about 1e-15 L; FCL's triangle distance loses a few digits on slivers.
 constexpr double kAgreement = 1e-9;
+/// Every band, in the order the summary lists them.
+const std::string kBandNames[] = {"touching", "near", "mid", "far", "distant", "uniform", "collision"};
 
 std::vector<std::string> splitList(const std::string& text) {
   std::vector<std::string> out;
@@ -110,7 +120,9 @@ adsd::cli::CommandLine commandLine() {
                  "scenes of bench_scenes (mesh pairs, problem_NAME planning problems), comma-separated, or 'all' for "
                  "every rigid one (default cows,bunnies,camels)")(
       "pairs", adsd::cli::value("A:B,..."), "more mesh pairs, FILE_A:FILE_B, comma-separated (any mesh file adsd reads)")(
-      "bands", adsd::cli::value("LIST"), "bands to run, comma-separated (default near,mid,far,uniform,collision)")(
+      "bands", adsd::cli::value("LIST"),
+      "bands to run, comma-separated (default near,mid,far,uniform,collision; touching, gaps 1e-6 to 1e-3 L, and "
+      "distant, 1 to 10 L, only when named)")(
       "poses", adsd::cli::value("N"), "queries per band (default 40)")(
       "rounds", adsd::cli::value("R"), "timed rounds over each band's queries (default 3)")(
       "seed", adsd::cli::value("S"), "seed of every band's drawing (default 2611)")(
@@ -134,8 +146,9 @@ Options optionsFrom(const adsd::cli::Arguments& given) {
   o.counters = given.has("counters");
   o.bands = splitList(given.text("bands").value_or(""));
   for (const std::string& band : o.bands) {
-    if (band != "near" && band != "mid" && band != "far" && band != "uniform" && band != "collision") {
-      throw adsd::cli::UsageError("--bands: expected near, mid, far, uniform or collision, got '" + band + "'");
+    if (std::find(std::begin(kBandNames), std::end(kBandNames), band) == std::end(kBandNames)) {
+      throw adsd::cli::UsageError("--bands: expected touching, near, mid, far, distant, uniform or collision, got '" +
+                                  band + "'");
     }
   }
   const std::string scenes = given.text("scenes").value_or("cows,bunnies,camels");
@@ -258,8 +271,7 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
   // hash, fixed for a given name, so a command draws the same poses on every run here).
   adsd::bench::SeededRandom random(o.seed ^ std::hash<std::string>{}(sceneName));
 
-  std::vector<Band> bands = {{"near", 0.001, 0.05, {}}, {"mid", 0.05, 0.3, {}}, {"far", 0.3, 1.0, {}}};
-  for (Band& band : bands) {
+  auto drawGapBand = [&](Band& band) {
     if (planning) {
       adsd::bench::NearObstacleSpec spec;
       spec.count = o.poses;
@@ -289,7 +301,9 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
         std::printf("%-24s %-9s not drawn: %s\n", sceneName.c_str(), band.name.c_str(), e.what());
       }
     }
-  }
+  };
+  std::vector<Band> bands = {{"near", 0.001, 0.05, {}}, {"mid", 0.05, 0.3, {}}, {"far", 0.3, 1.0, {}}};
+  for (Band& band : bands) drawGapBand(band);
   if (planning) {
     bands.push_back({"uniform", 0, 0, uniformStates(b.bounds(), planar, o.poses, random, nullptr)});
     bands.push_back({"collision", 0, 0, uniformStates(b.bounds(), planar, o.poses, random, &gap)});
@@ -300,6 +314,13 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     } catch (const std::runtime_error& e) {
       std::printf("%-24s %-9s not drawn: %s\n", sceneName.c_str(), "collision", e.what());
     }
+  }
+  // The bands beyond the issue's five, drawn last and only when named, so that the five draw the
+  // same poses with or without them.
+  for (Band extra : {Band{"touching", 1e-6, 1e-3, {}}, Band{"distant", 1.0, 10.0, {}}}) {
+    if (std::find(o.bands.begin(), o.bands.end(), extra.name) == o.bands.end()) continue;
+    drawGapBand(extra);
+    bands.push_back(std::move(extra));
   }
 
   int status = 0;
@@ -431,7 +452,7 @@ void summary(const std::vector<BandResult>& results, const std::string& markdown
     std::string band, scenes, exact, tolerance, validity, capped;
   };
   std::vector<Row> rows;
-  for (const char* band : {"near", "mid", "far", "uniform", "collision"}) {
+  for (const std::string& band : kBandNames) {
     std::vector<double> e, t, v, c;
     std::string worstE, worstT, worstV, worstC;
     auto track = [](std::vector<double>& x, std::string& worst, double value, const std::string& scene) {

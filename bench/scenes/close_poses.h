@@ -49,10 +49,17 @@ struct ClosePoseStats {
   std::size_t gapEvaluations = 0;
 };
 
-/// Bisection steps along the approach line: each halves the bracket [0, 1.1 (rA + rB) + L], at
-/// most 2.1 L long, so 40 steps leave it under 2e-12 L: the gap reached exceeds the target by far
-/// less than the band's width (the band's low end is 1e-3 L).
+/// Bisection steps along the approach line, at least: each halves the bracket
+/// [0, 1.1 (rA + rB) + max(1, band's top) L], 2.1 L long for bands up to L, so 40 steps leave it
+/// under 2e-12 L: the gap reached exceeds the target by far less than the band's width (the near
+/// band's low end is 1e-3 L). Bands reaching lower take more (placementBisectionSteps).
 constexpr int kPlacementBisectionSteps = 40;
+
+/// Steps that leave a bracket of length \p bracket under 1e-6 of the smallest gap aimed at.
+inline int placementBisectionSteps(double bracket, double smallestGap) {
+  const double needed = std::ceil(std::log2(bracket / (1e-6 * smallestGap)));
+  return std::max(kPlacementBisectionSteps, std::isfinite(needed) ? static_cast<int>(needed) : 0);
+}
 
 /// \brief Reference length of a pair: the larger bounding-box diagonal (mesh frames).
 inline double referenceLength(const Mesh& a, const Mesh& b) {
@@ -133,13 +140,14 @@ inline std::vector<PosePair> makeClosePoses(const Mesh& a, const Mesh& b, const 
       return p;
     };
 
-    double lo = 0.0, hi = 1.1 * (radiusA + radiusB) + length;
+    double lo = 0.0, hi = 1.1 * (radiusA + radiusB) + std::max(1.0, spec.maxGapFraction) * length;
     ++local.gapEvaluations;
     if (gap(pair.a, placeB(lo)) >= target && !bracketFromOutside(gap, pair.a, placeB, target, lo, hi, local)) {
       ++local.rejectedNoCrossing;
       continue;
     }
-    for (int step = 0; step < kPlacementBisectionSteps; ++step) {
+    const int steps = placementBisectionSteps(hi - lo, spec.minGapFraction * length);
+    for (int step = 0; step < steps; ++step) {
       const double mid = 0.5 * (lo + hi);
       ++local.gapEvaluations;
       (gap(pair.a, placeB(mid)) < target ? lo : hi) = mid;
