@@ -86,7 +86,14 @@ void requireFile(const std::string& path, const SourceLocation& where, const cha
     throw InputError(where.describe() + ": " + what + " '" + path + "' is a directory");
   }
   if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(where.describe() + ": " + what + " '" + path + "' does not exist");
+    // A file under the robots' cache is one the shipped problems expect fetch_robots.sh to have
+    // fetched: the message says where that script is.
+    const std::string robots = defaultRobotsDirectory() + "/";
+    const std::string hint = path.compare(0, robots.size(), robots) == 0
+                                 ? " (the shipped arm problems' robots are fetched by fetch_robots.sh: problems/data/ "
+                                   "of the source, PREFIX/share/adsd/ of an install)"
+                                 : "";
+    throw InputError(where.describe() + ": " + what + " '" + path + "' does not exist" + hint);
   }
 }
 

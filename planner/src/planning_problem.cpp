@@ -32,7 +32,16 @@ namespace {
 Mesh loadProblemMesh(const std::string& path, const SourceLocation& where) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
-    throw InputError(where.describe() + ": mesh file '" + path + "' does not exist");
+    // The shipped problems reach the fetched real models through a `data` directory beside them
+    // (cow_doorway.cfg's cow), which an install leaves for the user to link: the message says how.
+    const std::filesystem::path missing(path);
+    const std::string hint =
+        missing.parent_path().filename() == "data"
+            ? " (a shipped problem's real meshes are fetched by fetch_meshes.sh, in problems/data/ of the source or "
+              "PREFIX/share/adsd/ of an install, into ~/.cache/adsd/meshes; link that directory as '" +
+                  missing.parent_path().string() + "')"
+            : "";
+    throw InputError(where.describe() + ": mesh file '" + path + "' does not exist" + hint);
   }
   try {
     return io::loadMesh(path);

@@ -495,6 +495,23 @@ TEST(ArmPlanningProblem, RobotWithoutCollisionGeometryIsWarnedOf) {
   for (const std::string& w : kr5.warnings()) EXPECT_EQ(w.find("<collision>"), std::string::npos) << w;
 }
 
+// A robot missing from the robots' cache (${ADSD_ROBOTS}) is one the shipped problems expect
+// fetch_robots.sh to have fetched, installed beside them or not: the message says where it is.
+TEST(ArmPlanningProblem, RobotMissingFromTheCacheNamesFetchRobots) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = ${ADSD_ROBOTS}/no_such_robot/robot.urdf\n"
+                                        "scene = scene.yaml\nrequest = request.yaml\n";
+  try {
+    ArmPlanningProblem(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
+    FAIL() << "no error";
+  } catch (const adsd::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "problem.cfg").string() + ":3: key 'problem.robot': URDF file '" +
+                                         defaultRobotsDirectory() + "/no_such_robot/robot.urdf' does not exist "
+                                         "(the shipped arm problems' robots are fetched by fetch_robots.sh: "
+                                         "problems/data/ of the source, PREFIX/share/adsd/ of an install)");
+  }
+}
+
 // A <mimic> joint (a gripper's second finger) is not made to follow the joint it names: the problem
 // says it is planned on its own, and the start state must give its position.
 TEST(ArmPlanningProblem, MimicJointIsWarnedOf) {
