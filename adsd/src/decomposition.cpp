@@ -116,10 +116,12 @@ void Query::visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hin
       ++counters_.pairsRejectedByBounds;
       return;
     }
-    // Sec. 5: a separated pair goes to the hashing stage.
-    ++counters_.pairsHashed;
-    hashStage(a, b, g);
-    return;
+    // Sec. 5: a separated pair goes to the hashing stage, unless the grid would cull too little
+    // for its size (hashStage declines): then it is split as an overlapping pair would be.
+    if (hashStage(a, b, g)) {
+      ++counters_.pairsHashed;
+      return;
+    }
   }
   ++counters_.pairsSplit;
   splitAdaptively(a, b, depth, g.direction);

@@ -556,6 +556,41 @@ TEST(MeshDistance, ValidityQueryDecidedAtTheRootSpheresKeepsItsPromises) {
   }
 }
 
+// From scratch, a separated pair whose hulls nearly touch while the surfaces are far apart: a ball
+// hovering over a wide "C" lying flat, off its centre. The hulls are `gap` apart, the ball is
+// metres from the C, so the bounds leave the whole C in the slab and cells as large as it:
+// the grid would pair nearly every triangle with every other (the CGAL blade and turbine 10 apart
+// took 1.7 s so). The pair is split instead, and its halves' bounds drop most of it.
+TEST(MeshDistance, SeparatedPairTheGridCannotCullIsSplitAndStaysExact) {
+  const Mesh ring = shapes::cShape(4.0, 0.4, 0.6, 100);
+  const Mesh ball = shapes::sphere(0.5, 24);
+  const double gap = 0.05;
+  const Pose poseA = Eigen::Translation3d(Vec3(0.3, -0.2, 1.0)) * Eigen::AngleAxisd(0.2, Vec3(1, 0, 0));
+  const Pose poseB = poseA * Eigen::Translation3d(Vec3(1.2, -0.8, 0.2 + gap + 0.5));
+  const oracle::MeshPairDistance truth = oracle::meshDistance(ring, poseA, ball, poseB);
+  const double accuracy = kPromisedAccuracy * oracle::sceneDiagonal(ring, poseA, ball, poseB);
+  ASSERT_GT(truth.value, 20 * gap);  // the surfaces are far apart for hulls `gap` apart
+  DistanceScratch scratch;
+  const DistanceResult exact = distance(ring, poseA, ball, poseB, DistanceOptions::exactDistance(), scratch);
+  EXPECT_NEAR(exact.distance, truth.value, accuracy);
+  EXPECT_NEAR((exact.witnessA - exact.witnessB).norm(), exact.distance, accuracy);
+  // Split at the root although GJK separated it, and far fewer triangle pairs than the grid met.
+  EXPECT_GE(exact.counters.pairsSplit, 1u);
+  EXPECT_GE(exact.counters.maxDepth, 1);
+  EXPECT_LT(exact.counters.trianglePairsTested, ring.triangleCount() * ball.triangleCount() / 100);
+  // The other modes on the same path keep their promises.
+  const DistanceResult tolerant = distance(ring, poseA, ball, poseB, DistanceOptions::withTolerance(0.0, 0.01), scratch);
+  EXPECT_LE(tolerant.lower, truth.value + accuracy);
+  EXPECT_GE(tolerant.upper, truth.value - accuracy);
+  EXPECT_LE(tolerant.upper - tolerant.lower, 0.01 * tolerant.upper + accuracy);
+  EXPECT_EQ(distance(ring, poseA, ball, poseB, DistanceOptions::aboveThreshold(0.99 * truth.value), scratch).status,
+            DistanceStatus::aboveThreshold);
+  EXPECT_EQ(distance(ring, poseA, ball, poseB, DistanceOptions::aboveThreshold(1.01 * truth.value), scratch).status,
+            DistanceStatus::withinThreshold);
+  const DistanceResult capped = distance(ring, poseA, ball, poseB, DistanceOptions::cappedAt(0.5 * truth.value), scratch);
+  EXPECT_EQ(capped.status, DistanceStatus::beyondCap);
+}
+
 }  // namespace
 /// Two parallel triangles s across, their corners s and 2 s along the axes: s / sqrt(3) apart.
 /// At s = 1e-55 the face test's sixth power of lengths underflowed to 0, and 0 >= 0 proved the
