@@ -4,6 +4,7 @@
 ///
 ///   bench_bands [--scenes a,b,...] [--pairs A.off:B.off,...] [--bands near,...] [--poses N]
 ///               [--rounds R] [--seed S] [--csv FILE] [--summary-md FILE] [--quick] [--counters]
+///               [--scratch]
 ///
 /// Why bands: a planner asks for clearance at every distance, mostly far from contact, while
 /// bench_scenes places its queries near contact only. Each band is drawn with FCL (placement
@@ -78,6 +79,7 @@ struct Options {
   std::string summaryMarkdown;
   std::vector<std::string> bands;  // empty: every band
   bool counters = false;           // also print each band's work per query, ours and FCL's
+  bool scratch = false;            // also time both libraries without kept trees (deforming meshes)
 };
 
 /// One band's poses and how they were drawn.
@@ -112,7 +114,7 @@ adsd::cli::CommandLine commandLine() {
   adsd::cli::CommandLine line(
       "bench_bands",
       "bench_bands [--scenes a,b,...] [--pairs A:B,...] [--bands near,...] [--poses N] [--rounds R] [--seed S]\n"
-      "            [--csv FILE] [--summary-md FILE] [--quick] [--counters]",
+      "            [--csv FILE] [--summary-md FILE] [--quick] [--counters] [--scratch]",
       "Every query mode against FCL, band by band: near contact, mid range, far apart, uniform planning states, "
       "in collision.",
       "Exit status: 0, 2 for a bad command line or a missing mesh, 3 when an answer disagrees with FCL's.");
@@ -131,7 +133,9 @@ adsd::cli::CommandLine commandLine() {
       "quick", "10 poses, 1 round: a smoke run")(
       "counters", "also print each band's mean work per exact query, ours (node pairs, splits, GJK runs, triangle "
                   "pairs) and FCL's (bounding-volume and triangle tests), counted in an untimed pass, and a 1 % "
-                  "tolerance's work in per cent of it, ours and FCL's (rel_err 0.01)");
+                  "tolerance's work in per cent of it, ours and FCL's (rel_err 0.01)")(
+      "scratch", "also time, per band, our exact query from scratch (the paper's stages, no trees: what a deforming "
+                 "mesh gets) against FCL rebuilding both OBBRSS trees and then measuring");
   return line;
 }
 
@@ -144,6 +148,7 @@ Options optionsFrom(const adsd::cli::Arguments& given) {
   o.summaryMarkdown = given.text("summary-md").value_or("");
   if (given.has("quick")) o.poses = 10, o.rounds = 1;
   o.counters = given.has("counters");
+  o.scratch = given.has("scratch");
   o.bands = splitList(given.text("bands").value_or(""));
   for (const std::string& band : o.bands) {
     if (std::find(std::begin(kBandNames), std::end(kBandNames), band) == std::end(kBandNames)) {
@@ -215,6 +220,7 @@ struct BandResult {
   double nodePairsExact = 0, nodePairsTolerance = 0, nodePairsValidity = 0;  // medians
   double worstError = 0;          // max |ours - FCL| / L
   bool distances = true;          // false: the collision band (validity only)
+  double scratch = 0, fclRebuild = 0;  // --scratch: median us from scratch, ours and FCL's (0: not run)
 };
 
 /// The mean work of an exact query over \p poses, ours on the trees and FCL's, in an untimed pass
@@ -328,7 +334,8 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
   // the next query), and methods run back to back on the same pose, so a shared scratch would hand
   // each method the answer of the one before it. Per method, the hint comes from another pose of
   // the band, as it would from a planner's previous, unrelated query.
-  adsd::DistanceScratch scratchExact, scratchTolerance, scratchCapped, scratchValidity;
+  adsd::DistanceScratch scratchExact, scratchTolerance, scratchCapped, scratchValidity, scratchFromScratch;
+  const std::vector<fcl::Triangle> fclTrianglesA = adsd::bench::fclTriangles(a), fclTrianglesB = adsd::bench::fclTriangles(b);
   for (const Band& band : bands) {
     if (!o.bands.empty() && std::find(o.bands.begin(), o.bands.end(), band.name) == o.bands.end()) continue;
     const std::size_t n = band.poses.size();
@@ -337,7 +344,8 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     // Each method's answer per query, by the method's name (validity: 1 free, 0 in contact); the
     // checks below and the CSV read them from here.
     std::map<std::string, std::vector<double>> answers;
-    for (const char* name : {"exact", "tolerance", "capped", "fcl_distance", "validity", "fcl_collide"}) {
+    for (const char* name :
+         {"exact", "tolerance", "capped", "fcl_distance", "validity", "fcl_collide", "scratch", "fcl_rebuild"}) {
       answers[name].assign(n, 0.0);
     }
     std::vector<double>& exact = answers["exact"];
@@ -346,6 +354,8 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     std::vector<double>& fclD = answers["fcl_distance"];
     std::vector<double>& freeOurs = answers["validity"];
     std::vector<double>& freeFcl = answers["fcl_collide"];
+    std::vector<double>& fromScratch = answers["scratch"];
+    std::vector<double>& fclRebuilt = answers["fcl_rebuild"];
     std::vector<double> pairsExact(n), pairsTolerance(n), pairsValidity(n);
     auto query = [&](std::size_t i, const adsd::DistanceOptions& options, adsd::DistanceScratch& scratch) {
       const PosePair& p = band.poses[i];
@@ -369,6 +379,21 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
       methods.push_back({"fcl_distance", [&](std::size_t i) {
                            const PosePair& p = band.poses[i];
                            fclD[i] = std::max(0.0, adsd::bench::fclDistance(*fa, p.a, *fb, p.b).min_distance);
+                         }, {}, {}});
+    }
+    if (distances && o.scratch) {
+      // Without trees, as for a deforming mesh: our query on the meshes as given (the paper's
+      // stages), FCL's after rebuilding both trees from the vertices (the triangles' indices stay).
+      methods.push_back({"scratch", [&](std::size_t i) {
+                           const PosePair& p = band.poses[i];
+                           fromScratch[i] = adsd::distance(a, p.a, b, p.b, adsd::DistanceOptions::exactDistance(),
+                                                           scratchFromScratch).distance;
+                         }, {}, {}});
+      methods.push_back({"fcl_rebuild", [&](std::size_t i) {
+                           const PosePair& p = band.poses[i];
+                           const auto ra = adsd::bench::buildObbrss(a.vertices(), fclTrianglesA);
+                           const auto rb = adsd::bench::buildObbrss(b.vertices(), fclTrianglesB);
+                           fclRebuilt[i] = std::max(0.0, adsd::bench::fclDistance(*ra, p.a, *rb, p.b).min_distance);
                          }, {}, {}});
     }
     methods.push_back({"validity", [&](std::size_t i) {
@@ -401,6 +426,7 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
     }
     if (distances) {
       r.ours = med("exact"), r.tolerance = med("tolerance"), r.capped = med("capped"), r.fclDistance = med("fcl_distance");
+      if (o.scratch) r.scratch = med("scratch"), r.fclRebuild = med("fcl_rebuild");
       r.nodePairsExact = adsd::bench::median(pairsExact);
       r.nodePairsTolerance = adsd::bench::median(pairsTolerance);
       const double cap = kCapFraction * length;
@@ -409,9 +435,14 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
         const bool capOk = exact[i] >= cap ? capped[i] >= cap * (1.0 - 1e-12) : std::abs(capped[i] - exact[i]) <= kAgreement * length;
         const bool tolOk = tolerance[i] >= exact[i] - kAgreement * length &&
                            tolerance[i] <= exact[i] * (1.0 + kRelativeTolerance) + kAgreement * length;
-        if (std::abs(exact[i] - fclD[i]) > kAgreement * length || !capOk || !tolOk) {
-          std::fprintf(stderr, "bench_bands: %s %s query %zu: exact %.17g, FCL %.17g, tolerance %.17g, capped %.17g\n",
-                       sceneName.c_str(), band.name.c_str(), i, exact[i], fclD[i], tolerance[i], capped[i]);
+        const bool scratchOk = !o.scratch || (std::abs(fromScratch[i] - fclD[i]) <= kAgreement * length &&
+                                              std::abs(fclRebuilt[i] - fclD[i]) <= kAgreement * length);
+        if (std::abs(exact[i] - fclD[i]) > kAgreement * length || !capOk || !tolOk || !scratchOk) {
+          std::fprintf(stderr,
+                       "bench_bands: %s %s query %zu: exact %.17g, FCL %.17g, tolerance %.17g, capped %.17g, from "
+                       "scratch %.17g, FCL rebuilt %.17g\n",
+                       sceneName.c_str(), band.name.c_str(), i, exact[i], fclD[i], tolerance[i], capped[i],
+                       fromScratch[i], fclRebuilt[i]);
           status = 3;
         }
       }
@@ -438,6 +469,10 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
                   band.name.c_str(), "", "", "", "", r.validity, r.fclCollide, "", "", r.validity / r.fclCollide, "", "",
                   "", r.nodePairsValidity);
     }
+    if (o.scratch && distances) {
+      std::printf("%-34s from scratch (no trees): ours %.1f us, FCL rebuild + distance %.1f us: %.4f\n", "",
+                  r.scratch, r.fclRebuild, r.scratch / r.fclRebuild);
+    }
     if (o.counters && distances) printWork(ta, tb, *fa, *fb, band.poses);
     std::fflush(stdout);
     results.push_back(r);
@@ -449,12 +484,15 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
 /// text on stdout and, when \p markdown is given, as a Markdown table there.
 void summary(const std::vector<BandResult>& results, const std::string& markdown) {
   struct Row {
-    std::string band, scenes, exact, tolerance, validity, capped;
+    std::string band, scenes, exact, tolerance, validity, capped, scratch;
   };
+  // --scratch: the from-scratch column, where any band measured it.
+  const bool anyScratch =
+      std::any_of(results.begin(), results.end(), [](const BandResult& r) { return r.fclRebuild > 0; });
   std::vector<Row> rows;
   for (const std::string& band : kBandNames) {
-    std::vector<double> e, t, v, c;
-    std::string worstE, worstT, worstV, worstC;
+    std::vector<double> e, t, v, c, f;
+    std::string worstE, worstT, worstV, worstC, worstF;
     auto track = [](std::vector<double>& x, std::string& worst, double value, const std::string& scene) {
       if (x.empty() || value > *std::max_element(x.begin(), x.end())) worst = scene;
       x.push_back(value);
@@ -466,31 +504,37 @@ void summary(const std::vector<BandResult>& results, const std::string& markdown
       track(e, worstE, r.ours / r.fclDistance, r.scene);
       track(t, worstT, r.tolerance / r.ours, r.scene);
       track(c, worstC, r.capped / r.fclDistance, r.scene);
+      if (r.fclRebuild > 0) track(f, worstF, r.scratch / r.fclRebuild, r.scene);
     }
     if (v.empty()) continue;
-    auto cell = [](const std::vector<double>& x, const std::string& worst) {
+    // Three decimals, or three significant digits for the from-scratch ratios (hundredths and less).
+    auto cell = [](const std::vector<double>& x, const std::string& worst, const char* format = "%.3f (worst %.3f, %s)") {
       if (x.empty()) return std::string("-");
       char buffer[128];
-      std::snprintf(buffer, sizeof buffer, "%.3f (worst %.3f, %s)", adsd::bench::median(x),
+      std::snprintf(buffer, sizeof buffer, format, adsd::bench::median(x),
                     *std::max_element(x.begin(), x.end()), worst.c_str());
       return std::string(buffer);
     };
-    rows.push_back({band, std::to_string(v.size()), cell(e, worstE), cell(t, worstT), cell(v, worstV), cell(c, worstC)});
+    rows.push_back({band, std::to_string(v.size()), cell(e, worstE), cell(t, worstT), cell(v, worstV), cell(c, worstC),
+                    cell(f, worstF, "%.3g (worst %.3g, %s)")});
   }
   std::printf("\nSummary per band over the scenes: median of the ratios of medians (worst scene)\n");
-  std::printf("%-9s %6s  %-40s %-40s %-40s %-40s\n", "band", "scenes", "exact / FCL distance", "1% tolerance / exact",
-              "validity / FCL collide", "capped / FCL distance");
+  std::printf("%-9s %6s  %-40s %-40s %-40s %-40s%s\n", "band", "scenes", "exact / FCL distance", "1% tolerance / exact",
+              "validity / FCL collide", "capped / FCL distance", anyScratch ? " from scratch / FCL rebuild + distance" : "");
   for (const Row& r : rows) {
-    std::printf("%-9s %6s  %-40s %-40s %-40s %-40s\n", r.band.c_str(), r.scenes.c_str(), r.exact.c_str(),
-                r.tolerance.c_str(), r.validity.c_str(), r.capped.c_str());
+    std::printf("%-9s %6s  %-40s %-40s %-40s %-40s %s\n", r.band.c_str(), r.scenes.c_str(), r.exact.c_str(),
+                r.tolerance.c_str(), r.validity.c_str(), r.capped.c_str(), anyScratch ? r.scratch.c_str() : "");
   }
   if (markdown.empty()) return;
   std::ofstream out(markdown);
-  out << "| band | scenes | exact ÷ FCL distance | 1 % tolerance ÷ exact | validity (D = 0) ÷ FCL collide | capped at 5 % L ÷ FCL distance |\n";
-  out << "|---|---:|---|---|---|---|\n";
+  out << "| band | scenes | exact ÷ FCL distance | 1 % tolerance ÷ exact | validity (D = 0) ÷ FCL collide | capped at 5 % L ÷ FCL distance |"
+      << (anyScratch ? " from scratch ÷ FCL rebuild + distance |" : "") << "\n";
+  out << "|---|---:|---|---|---|---|" << (anyScratch ? "---|" : "") << "\n";
   for (const Row& r : rows) {
     out << "| " << r.band << " | " << r.scenes << " | " << r.exact << " | " << r.tolerance << " | " << r.validity << " | "
-        << r.capped << " |\n";
+        << r.capped << " |";
+    if (anyScratch) out << " " << r.scratch << " |";
+    out << "\n";
   }
   if (!out) throw std::runtime_error("cannot write " + markdown);
 }

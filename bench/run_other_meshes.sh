@@ -3,7 +3,7 @@
 # the library used before: the check that a speed-up measured on the shipped scenes holds on
 # models it was not tuned on.
 #
-#   bench/run_other_meshes.sh [BUILD_DIR] [--poses N] [--rounds R] [--bands LIST] [--out DIR]
+#   bench/run_other_meshes.sh [BUILD_DIR] [--poses N] [--rounds R] [--bands LIST] [--scratch] [--out DIR]
 #
 # The meshes are 38 more models of the CGAL data (Debian libcgal-demo), picked for variety: scans
 # and sculpted shapes (homer, bull, lion, dino), CAD parts with flat faces and sharp edges
@@ -14,9 +14,11 @@
 # About 3 minutes on an idle 2-core machine (20 poses, 2 rounds).
 #
 # --bands passes bench_bands' band list (default: its five; touching,distant measures the gaps
-# below and beyond them). BUILD_DIR (default: build) must hold a Release build of bench_bands.
-# Fetches the meshes first (problems/data/fetch_meshes.sh --others, into the same cache). Writes
-# into DIR (default bench/results; CI's bench-smoke test runs 2 poses, 1 round into its build tree):
+# below and beyond them); --scratch adds bench_bands' from-scratch column (no trees: our query
+# against FCL rebuilding its trees, what a deforming mesh gets). BUILD_DIR (default: build) must
+# hold a Release build of bench_bands. Fetches the meshes first (problems/data/fetch_meshes.sh
+# --others, into the same cache). Writes into DIR (default bench/results; CI's bench-smoke test
+# runs 2 poses, 1 round into its build tree):
 #   other_meshes.txt      what bench_bands printed (per pair and band, with the work counters)
 #   other_meshes.csv      one row per query, method and round
 #   other_meshes.md       the summary per band: median of the pairs' ratios, and the worst pair
@@ -25,14 +27,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-build=build poses=20 rounds=2 out=bench/results bands=""
+build=build poses=20 rounds=2 out=bench/results bands="" scratch=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --poses) [[ $# -ge 2 ]] || { echo "run_other_meshes.sh: --poses needs a number" >&2; exit 2; }; poses=$2; shift ;;
     --rounds) [[ $# -ge 2 ]] || { echo "run_other_meshes.sh: --rounds needs a number" >&2; exit 2; }; rounds=$2; shift ;;
     --bands) [[ $# -ge 2 ]] || { echo "run_other_meshes.sh: --bands needs a list" >&2; exit 2; }; bands=$2; shift ;;
+    --scratch) scratch=--scratch ;;
     --out) [[ $# -ge 2 ]] || { echo "run_other_meshes.sh: --out needs a directory" >&2; exit 2; }; out=$2; shift ;;
-    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "run_other_meshes.sh: unknown option '$1'" >&2; exit 2 ;;
     *) build=$1 ;;
   esac
@@ -54,7 +57,7 @@ for p in "${PAIRS[@]}"; do list+="${list:+,}$meshes/${p%%:*}.off:$meshes/${p##*:
 mkdir -p "$out"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/adsd-other-meshes.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
-"$build/bench/bench_bands" --scenes "" --pairs "$list" ${bands:+--bands "$bands"} --poses "$poses" --rounds "$rounds" --counters \
+"$build/bench/bench_bands" --scenes "" --pairs "$list" ${bands:+--bands "$bands"} $scratch --poses "$poses" --rounds "$rounds" --counters \
   --csv "$tmp/other_meshes.csv" --summary-md "$tmp/other_meshes.md" > "$tmp/other_meshes.txt"
 # Replaced only after a complete run, so a failed one leaves the last good results.
 mv -f "$tmp"/other_meshes.{txt,csv,md} "$out"/
