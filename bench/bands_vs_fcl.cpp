@@ -335,7 +335,8 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
   // each method the answer of the one before it. Per method, the hint comes from another pose of
   // the band, as it would from a planner's previous, unrelated query.
   adsd::DistanceScratch scratchExact, scratchTolerance, scratchCapped, scratchValidity, scratchFromScratch;
-  const std::vector<fcl::Triangle> fclTrianglesA = adsd::bench::fclTriangles(a), fclTrianglesB = adsd::bench::fclTriangles(b);
+  const std::vector<fcl::Triangle> fclTrianglesA = adsd::bench::fclTriangles(a);
+  const std::vector<fcl::Triangle> fclTrianglesB = adsd::bench::fclTriangles(b);
   for (const Band& band : bands) {
     if (!o.bands.empty() && std::find(o.bands.begin(), o.bands.end(), band.name) == o.bands.end()) continue;
     const std::size_t n = band.poses.size();
@@ -508,7 +509,8 @@ void summary(const std::vector<BandResult>& results, const std::string& markdown
     }
     if (v.empty()) continue;
     // Three decimals, or three significant digits for the from-scratch ratios (hundredths and less).
-    auto cell = [](const std::vector<double>& x, const std::string& worst, const char* format = "%.3f (worst %.3f, %s)") {
+    auto cell = [](const std::vector<double>& x, const std::string& worst,
+                   const char* format = "%.3f (worst %.3f, %s)") {
       if (x.empty()) return std::string("-");
       char buffer[128];
       std::snprintf(buffer, sizeof buffer, format, adsd::bench::median(x),
@@ -519,15 +521,17 @@ void summary(const std::vector<BandResult>& results, const std::string& markdown
                     cell(f, worstF, "%.3g (worst %.3g, %s)")});
   }
   std::printf("\nSummary per band over the scenes: median of the ratios of medians (worst scene)\n");
-  std::printf("%-9s %6s  %-40s %-40s %-40s %-40s%s\n", "band", "scenes", "exact / FCL distance", "1% tolerance / exact",
-              "validity / FCL collide", "capped / FCL distance", anyScratch ? " from scratch / FCL rebuild + distance" : "");
+  std::printf("%-9s %6s  %-40s %-40s %-40s %-40s%s\n", "band", "scenes", "exact / FCL distance",
+              "1% tolerance / exact", "validity / FCL collide", "capped / FCL distance",
+              anyScratch ? " from scratch / FCL rebuild + distance" : "");
   for (const Row& r : rows) {
     std::printf("%-9s %6s  %-40s %-40s %-40s %-40s %s\n", r.band.c_str(), r.scenes.c_str(), r.exact.c_str(),
                 r.tolerance.c_str(), r.validity.c_str(), r.capped.c_str(), anyScratch ? r.scratch.c_str() : "");
   }
   if (markdown.empty()) return;
   std::ofstream out(markdown);
-  out << "| band | scenes | exact ÷ FCL distance | 1 % tolerance ÷ exact | validity (D = 0) ÷ FCL collide | capped at 5 % L ÷ FCL distance |"
+  out << "| band | scenes | exact ÷ FCL distance | 1 % tolerance ÷ exact | validity (D = 0) ÷ FCL collide | "
+         "capped at 5 % L ÷ FCL distance |"
       << (anyScratch ? " from scratch ÷ FCL rebuild + distance |" : "") << "\n";
   out << "|---|---:|---|---|---|---|" << (anyScratch ? "---|" : "") << "\n";
   for (const Row& r : rows) {

@@ -147,7 +147,8 @@ bool Query::hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g) {
     // size, the cells are as large as the slab and the grid culls next to nothing (blade and
     // turbine, 10 apart: 34 682 triangles in the slab, 1.7 s): splitting the pair lets its halves'
     // GJK bounds drop most of it instead (tolerance::kHashCandidatesPerTriangle).
-    const double cells = std::max(1.0, std::ceil((maxX - minX) / cell)) * std::max(1.0, std::ceil((maxY - minY) / cell));
+    const double cells =
+        std::max(1.0, std::ceil((maxX - minX) / cell)) * std::max(1.0, std::ceil((maxY - minY) / cell));
     const double candidates = static_cast<double>(pairs) * std::min(1.0, 9.0 / cells);
     if ((a.triangles() > 1 || b.triangles() > 1) &&
         candidates > tolerance::kHashCandidatesPerTriangle * static_cast<double>(slabA.size() + slabB.size())) {

@@ -579,7 +579,8 @@ TEST(MeshDistance, SeparatedPairTheGridCannotCullIsSplitAndStaysExact) {
   EXPECT_GE(exact.counters.maxDepth, 1);
   EXPECT_LT(exact.counters.trianglePairsTested, ring.triangleCount() * ball.triangleCount() / 100);
   // The other modes on the same path keep their promises.
-  const DistanceResult tolerant = distance(ring, poseA, ball, poseB, DistanceOptions::withTolerance(0.0, 0.01), scratch);
+  const DistanceResult tolerant =
+      distance(ring, poseA, ball, poseB, DistanceOptions::withTolerance(0.0, 0.01), scratch);
   EXPECT_LE(tolerant.lower, truth.value + accuracy);
   EXPECT_GE(tolerant.upper, truth.value - accuracy);
   EXPECT_LE(tolerant.upper - tolerant.lower, 0.01 * tolerant.upper + accuracy);
@@ -587,7 +588,8 @@ TEST(MeshDistance, SeparatedPairTheGridCannotCullIsSplitAndStaysExact) {
             DistanceStatus::aboveThreshold);
   EXPECT_EQ(distance(ring, poseA, ball, poseB, DistanceOptions::aboveThreshold(1.01 * truth.value), scratch).status,
             DistanceStatus::withinThreshold);
-  const DistanceResult capped = distance(ring, poseA, ball, poseB, DistanceOptions::cappedAt(0.5 * truth.value), scratch);
+  const DistanceResult capped =
+      distance(ring, poseA, ball, poseB, DistanceOptions::cappedAt(0.5 * truth.value), scratch);
   EXPECT_EQ(capped.status, DistanceStatus::beyondCap);
 }
 

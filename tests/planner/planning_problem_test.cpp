@@ -72,9 +72,9 @@ TEST(PlanningProblem, RobotFileThatDoesNotExist) {
             cfg + ":2: key 'problem.robot': mesh file '" + dir.path("bar.obj") + "' does not exist");
   // In a `data` directory beside the cfg, as the shipped problems reach the fetched real models
   // (which an install leaves for the user to link): the message says where they come from.
-  const std::string inData = dir.write("in_data.cfg", "[problem]\nrobot = data/cow.off\nworld = walls.obj\nstart.x = -2.03\n"
-                                                      "start.y = -1\nstart.theta = 0\ngoal.x = -2.03\ngoal.y = 3\n"
-                                                      "goal.theta = 0\n");
+  const std::string inData =
+      dir.write("in_data.cfg", "[problem]\nrobot = data/cow.off\nworld = walls.obj\nstart.x = -2.03\nstart.y = -1\n"
+                               "start.theta = 0\ngoal.x = -2.03\ngoal.y = 3\ngoal.theta = 0\n");
   const std::string message = errorOf(readProblemFile(inData));
   EXPECT_EQ(message.rfind(inData + ":2: key 'problem.robot': mesh file '" + dir.path("data/cow.off") +
                               "' does not exist (a shipped problem's real meshes are fetched by fetch_meshes.sh",
