@@ -268,8 +268,11 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
   Mesh ta = a, tb = b;
   ta.buildHierarchy();
   tb.buildHierarchy();
-  const auto fa = adsd::bench::buildObbrss(a.vertices(), adsd::bench::fclTriangles(a));
-  const auto fb = adsd::bench::buildObbrss(b.vertices(), adsd::bench::fclTriangles(b));
+  // FCL's triangles once: the prebuilt models use them, and --scratch's rebuilds (the indices stay).
+  const std::vector<fcl::Triangle> fclTrianglesA = adsd::bench::fclTriangles(a);
+  const std::vector<fcl::Triangle> fclTrianglesB = adsd::bench::fclTriangles(b);
+  const auto fa = adsd::bench::buildObbrss(a.vertices(), fclTrianglesA);
+  const auto fb = adsd::bench::buildObbrss(b.vertices(), fclTrianglesB);
   const adsd::bench::GapFunction gap = [&](const Pose& pa, const Pose& pb) {
     return std::max(0.0, adsd::bench::fclDistance(*fa, pa, *fb, pb).min_distance);
   };
@@ -335,8 +338,6 @@ int runScene(const std::string& sceneName, const Mesh& a, const Mesh& b, bool pl
   // each method the answer of the one before it. Per method, the hint comes from another pose of
   // the band, as it would from a planner's previous, unrelated query.
   adsd::DistanceScratch scratchExact, scratchTolerance, scratchCapped, scratchValidity, scratchFromScratch;
-  const std::vector<fcl::Triangle> fclTrianglesA = adsd::bench::fclTriangles(a);
-  const std::vector<fcl::Triangle> fclTrianglesB = adsd::bench::fclTriangles(b);
   for (const Band& band : bands) {
     if (!o.bands.empty() && std::find(o.bands.begin(), o.bands.end(), band.name) == o.bands.end()) continue;
     const std::size_t n = band.poses.size();

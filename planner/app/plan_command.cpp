@@ -219,6 +219,14 @@ SolveReport solveAndSimplify(ompl::geometric::SimpleSetup& ss, const Checker& ch
   return r;
 }
 
+/// Whether the path is simplified: when asked (not --no-simplify) and the objective is length.
+/// OMPL's simplifier shortens a path (it first tries the straight motion from start to goal), which
+/// undoes what the clearance objective found (the shipped maze by RRT*, 10 s, seed 1, before this
+/// rule: minimum clearance 0.0033 simplified, 0.218 as planned), so such a path is kept as planned.
+bool simplifies(const PlanArguments& a, ObjectiveKind objective) {
+  return a.simplify && objective == ObjectiveKind::length;
+}
+
 /// The summary lines every problem kind prints after its "problem" and "setup" lines.
 void printSolveReport(const PlanArguments& a, const SolveReport& r) {
   std::printf("seed        %lu%s\n", static_cast<unsigned long>(ompl::RNG::getSeed()), a.seed ? " (--seed)" : "");
@@ -242,9 +250,7 @@ int planArm(const PlanArguments& a) {
 
   ArmMotionCounts certified;
   std::uint64_t discreteMotions = 0, costedMotions = 0, costStates = 0;
-  // OMPL's simplifier shortens a path (it first tries the straight motion from start to goal),
-  // which undoes what the clearance objective found: with it, the path is kept as planned.
-  const bool simplify = a.simplify && problem.objective() == ObjectiveKind::length;
+  const bool simplify = simplifies(a, problem.objective());
   const SolveReport r = solveAndSimplify(ss, *problem.checker(), seconds, simplify, [&] {
     if (const auto& objective = problem.objectiveClearance()) {
       costedMotions = objective->motions();
@@ -336,10 +342,7 @@ int plan(const std::vector<std::string>& args) {
   const double seconds = a.seconds.value_or(file.benchmark.timeLimit.value_or(10.0));
 
   MotionCounts motionCounts;
-  // As for arms (planArm): the simplifier shortens the path back towards the obstacles, undoing
-  // what a clearance objective found (the shipped maze by RRT*, 10 s, seed 1, before this rule:
-  // minimum clearance 0.0033 simplified, 0.218 as planned), so such a path is kept as planned.
-  const bool simplify = a.simplify && problem.objective() == ObjectiveKind::length;
+  const bool simplify = simplifies(a, problem.objective());
   const SolveReport r = solveAndSimplify(ss, *problem.checker(), seconds, simplify, [&] {
     if (problem.certifiedValidator()) motionCounts = problem.certifiedValidator()->counts();
   });
