@@ -44,6 +44,10 @@ int planCommand(const std::vector<std::string>& args);
 /// checker and motion validator, its log, SQLite database and plots.
 int benchmarkCommand(const std::vector<std::string>& args);
 
+/// \brief `adsd srdf ROBOT.urdf --out ROBOT.srdf [options]` (srdf_command.cpp): the self-collision pairs
+/// to leave unchecked, found as MoveIt's setup assistant finds them, written as an SRDF.
+int srdfCommand(const std::vector<std::string>& args);
+
 /// \brief `adsd view [PROBLEM.cfg | ARM.cfg] [--path FILE] --html OUT.html` (view_command.cpp): the browser viewer.
 int viewCommand(const std::vector<std::string>& args);
 

@@ -23,6 +23,8 @@ const Command kCommands[] = {
      adsd::app::planCommand},
     {"benchmark", "OMPL benchmark of a problem file for each checker and motion validator: log, database, plots",
      adsd::app::benchmarkCommand},
+    {"srdf", "the self-collision pairs a robot needs left unchecked (adjacent, always touching), as an SRDF",
+     adsd::app::srdfCommand},
     {"view", "write a self-contained HTML page showing a problem, a path, its closest points and clearance",
      adsd::app::viewCommand},
 };

@@ -26,10 +26,12 @@
 #include "adsd/planner/arm_planning_problem.h"
 #include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/features.h"
+#include "run_adsd.h"
 
 namespace {
 
 using namespace adsd::planner;
+using namespace adsd_test;
 namespace fs = std::filesystem;
 
 const std::string kArmProblems = ADSD_ARM_PROBLEMS_DIR;
@@ -48,40 +50,6 @@ std::string otherCfgOf(const std::string& name) {
                    << ": " << readMotionBenchMakerProblem(cfg).robotPath << ")";                        \
     }                                                                                                   \
   } while (0)
-
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// A fresh directory per test.
-fs::path workDirectory() {
-  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::path(testing::TempDir()) / (std::string("adsd_arm_cli_") + info->test_suite_name() + "_" + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-struct PlanRun {
-  int status = -1;
-  std::string out, err;
-};
-
-/// Runs `adsd COMMAND ARGS` with stdout and stderr into files of \p dir.
-PlanRun runAdsd(const std::string& subcommand, const std::vector<std::string>& args, const fs::path& dir) {
-  std::string command = std::string("'") + ADSD_PROGRAM + "' " + subcommand;
-  for (const std::string& a : args) command += " '" + a + "'";
-  command += " > '" + (dir / "stdout").string() + "' 2> '" + (dir / "stderr").string() + "'";
-  const int raw = std::system(command.c_str());
-  PlanRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = readAll(dir / "stdout");
-  r.err = readAll(dir / "stderr");
-  return r;
-}
 
 /// Runs `adsd plan ARGS`.
 PlanRun plan(const std::vector<std::string>& args, const fs::path& dir) { return runAdsd("plan", args, dir); }

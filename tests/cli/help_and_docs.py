@@ -14,7 +14,7 @@ import re
 import subprocess
 import sys
 
-COMMANDS = ["distance", "plan", "benchmark", "view"]
+COMMANDS = ["distance", "plan", "benchmark", "view", "srdf"]
 failures = []
 
 
