@@ -27,7 +27,7 @@ void forwardKinematics(const ArmModel& model, const double* q, std::vector<Pose>
   for (std::size_t k = 0; k < model.joints.size(); ++k) {
     const ArmJoint& joint = model.joints[k];
     assert(joint.parentLink < joint.childLink);
-    const double position = joint.active >= 0 ? q[joint.active] : 0.0;
+    const double position = ArmModel::jointPosition(joint, q);
     linkPoses[joint.childLink] = linkPoses[joint.parentLink] * joint.origin * jointMotion(joint, position);
   }
 }

@@ -287,7 +287,6 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
   j.name = uj.name;
   j.parentLink = parentLink;
   j.childLink = childLink;
-  if (uj.mimic) j.mimics = uj.mimic->joint_name;
   const std::string where = urdfPath + ":" + std::to_string(outline.jointLine.at(j.name)) + ": joint '" + j.name + "'";
   const urdf::Vector3& at = uj.parent_to_joint_origin_transform.position;
   const Vec3 offset(at.x, at.y, at.z);
@@ -328,6 +327,60 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
   return j;
 }
 
+/// Points every mimic joint of \p model (not in the joint vector: readUrdf left it inactive) at the
+/// coordinate it follows, through any chain of mimic joints, with the multipliers and offsets
+/// composed: following g by (m1, o1) where g follows h by (m2, o2) is following h by
+/// (m1 m2, m1 o2 + o1).
+void resolveMimicJoints(const urdf::ModelInterface& urdf, const std::string& urdfPath, const UrdfOutline& outline,
+                        ArmModel& model) {
+  std::map<std::string, std::size_t> byName;
+  for (std::size_t k = 0; k < model.joints.size(); ++k) byName[model.joints[k].name] = k;
+  const auto inRange = [](double x) { return std::isfinite(x) && std::fabs(x) <= tolerance::kMaxCoordinate; };
+  for (ArmJoint& joint : model.joints) {
+    const urdf::JointConstSharedPtr uj = urdf.getJoint(joint.name);
+    if (!uj || !uj->mimic || joint.type == ArmJointType::fixed) continue;  // a fixed joint never moves
+    const std::string where =
+        urdfPath + ":" + std::to_string(outline.jointLine.at(joint.name)) + ": joint '" + joint.name + "'";
+    joint.mimics = uj->mimic->joint_name;
+    double multiplier = 1.0, offset = 0.0;
+    std::string leader = joint.name;
+    for (std::size_t hops = 0;; ++hops) {
+      const urdf::JointConstSharedPtr follower = urdf.getJoint(leader);
+      if (!follower->mimic) break;
+      if (hops == model.joints.size()) throw InputError(where + ": its <mimic> chain comes back to itself");
+      const double m = follower->mimic->multiplier, o = follower->mimic->offset;
+      if (!inRange(m) || !inRange(o)) {
+        std::ostringstream got;
+        got << m << ", " << o;
+        throw InputError(where + ": <mimic> of joint '" + follower->name +
+                         "': multiplier and offset must be finite and within 1e75, got " + got.str());
+      }
+      const auto next = byName.find(follower->mimic->joint_name);
+      if (next == byName.end() || model.joints[next->second].type == ArmJointType::fixed) {
+        throw InputError(where + ": <mimic joint='" + follower->mimic->joint_name + "'> of joint '" + follower->name +
+                         "' names no movable joint of the robot");
+      }
+      offset = multiplier * o + offset;
+      multiplier *= m;
+      leader = follower->mimic->joint_name;
+    }
+    const ArmJoint& lead = model.joints[byName.at(leader)];
+    // A continuous leader's angle wraps from pi to -pi: a follower at a multiple of it would jump
+    // there, unless it turns and the multiple is whole (a whole number of turns is no turn).
+    const bool wholeTurns = joint.type != ArmJointType::prismatic && multiplier == std::round(multiplier);
+    if (lead.type == ArmJointType::continuous && !wholeTurns) {
+      std::ostringstream why;
+      why << where << ": follows continuous joint '" << lead.name << "' with multiplier " << multiplier
+          << ", so it would jump where that joint's angle wraps at +-pi (only a turning joint at a whole multiple "
+             "can follow a continuous one)";
+      throw InputError(why.str());
+    }
+    joint.mimicCoordinate = lead.active;
+    joint.mimicMultiplier = multiplier;
+    joint.mimicOffset = offset;
+  }
+}
+
 }  // namespace
 
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath) {
@@ -356,7 +409,7 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
     if (linkIndex > 0) {
       model.joints.push_back(convertJoint(*visit.link->parent_joint, visit.parentLink, linkIndex, urdfPath, outline));
       link.parentJoint = static_cast<int>(model.joints.size() - 1);
-      if (model.joints.back().type != ArmJointType::fixed) {
+      if (model.joints.back().type != ArmJointType::fixed && !visit.link->parent_joint->mimic) {
         model.activeJoints.push_back(model.joints.size() - 1);
         model.joints.back().active = static_cast<int>(model.activeJoints.size() - 1);
       }
@@ -373,6 +426,7 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
       stack.push_back({urdf->getLink((*it)->child_link_name), linkIndex});
     }
   }
+  resolveMimicJoints(*urdf, urdfPath, outline, model);
   return model;
 }
 

@@ -2,11 +2,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace adsd::planner {
 
-ArmMotionBound::ArmMotionBound(const ArmModel& model)
-    : links_(model.links.size()), dof_(model.dof()), k_(links_ * dof_, 0.0), beyond_(links_ * dof_, 0) {
+namespace {
+
+/// The range of positions a joint takes over the joint vectors within the limits: its own limits,
+/// or for a mimic joint its leader's, scaled and offset.
+std::pair<double, double> positionRange(const ArmModel& model, const ArmJoint& joint) {
+  if (joint.mimicCoordinate < 0) return {joint.lower, joint.upper};
+  const ArmJoint& leader = model.joints[model.activeJoints[static_cast<std::size_t>(joint.mimicCoordinate)]];
+  const double a = joint.mimicMultiplier * leader.lower + joint.mimicOffset;
+  const double b = joint.mimicMultiplier * leader.upper + joint.mimicOffset;
+  return {std::min(a, b), std::max(a, b)};
+}
+
+}  // namespace
+
+ArmMotionBound::ArmMotionBound(const ArmModel& model) : links_(model.links.size()), dof_(model.dof()) {
+  // The joints that move: every joint of the joint vector, and every mimic joint, which moves
+  // |multiplier| times as fast as the coordinate it follows.
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const ArmJoint& joint = model.joints[j];
+    if (joint.active >= 0) movers_.push_back({j, static_cast<std::size_t>(joint.active), 1.0});
+    if (joint.mimicCoordinate >= 0) {
+      movers_.push_back({j, static_cast<std::size_t>(joint.mimicCoordinate), std::abs(joint.mimicMultiplier)});
+    }
+  }
+  k_.assign(links_ * movers_.size(), 0.0);
+  beyond_.assign(links_ * movers_.size(), 0);
+  coefficients_.assign(links_ * dof_, 0.0);
   // r_L: the farthest vertex of each link from its frame origin.
   std::vector<double> radius(links_, 0.0);
   for (std::size_t l = 0; l < links_; ++l) {
@@ -17,11 +43,13 @@ ArmMotionBound::ArmMotionBound(const ArmModel& model)
   std::vector<double> step(links_, 0.0);
   for (std::size_t l = 1; l < links_; ++l) {
     const ArmJoint& j = model.joints[static_cast<std::size_t>(model.links[l].parentJoint)];
+    const auto [lower, upper] = positionRange(model, j);
     step[l] = j.origin.translation().norm() +
-              (j.type == ArmJointType::prismatic ? std::max(std::abs(j.lower), std::abs(j.upper)) : 0.0);
+              (j.type == ArmJointType::prismatic ? std::max(std::abs(lower), std::abs(upper)) : 0.0);
   }
-  for (std::size_t i = 0; i < dof_; ++i) {
-    const ArmJoint& joint = model.joints[model.activeJoints[i]];
+  const std::size_t movers = movers_.size();
+  for (std::size_t m = 0; m < movers; ++m) {
+    const ArmJoint& joint = model.joints[movers_[m].joint];
     const std::size_t c = joint.childLink;
     // Links beyond the joint: C and its descendants, which follow C contiguously in depth-first
     // order; chain[l] = sum of the steps from C (exclusive) to l (inclusive).
@@ -45,24 +73,29 @@ ArmMotionBound::ArmMotionBound(const ArmModel& model)
           k = fromAxis;
         }
       }
-      k_[l * dof_ + i] = k;
-      beyond_[l * dof_ + i] = 1;
+      k_[l * movers + m] = k * movers_[m].rate;
+      beyond_[l * movers + m] = 1;
+      coefficients_[l * dof_ + movers_[m].coordinate] += k * movers_[m].rate;
     }
   }
 }
 
 void ArmMotionBound::linkDisplacements(const double* dq, double* out) const {
+  const std::size_t movers = movers_.size();
   for (std::size_t l = 0; l < links_; ++l) {
     double b = 0.0;
-    for (std::size_t i = 0; i < dof_; ++i) b += k_[l * dof_ + i] * std::abs(dq[i]);
+    for (std::size_t m = 0; m < movers; ++m) b += k_[l * movers + m] * std::abs(dq[movers_[m].coordinate]);
     out[l] = b;
   }
 }
 
 double ArmMotionBound::pairDisplacement(std::size_t a, std::size_t b, const double* dq) const {
+  const std::size_t movers = movers_.size();
   double d = 0.0;
-  for (std::size_t i = 0; i < dof_; ++i) {
-    if (beyond_[a * dof_ + i] != beyond_[b * dof_ + i]) d += (k_[a * dof_ + i] + k_[b * dof_ + i]) * std::abs(dq[i]);
+  for (std::size_t m = 0; m < movers; ++m) {
+    if (beyond_[a * movers + m] != beyond_[b * movers + m]) {
+      d += (k_[a * movers + m] + k_[b * movers + m]) * std::abs(dq[movers_[m].coordinate]);
+    }
   }
   return d;
 }

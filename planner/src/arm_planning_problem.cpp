@@ -117,14 +117,6 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
                         "' has no <collision> geometry on any link (its <visual> geometry is not checked, as in "
                         "MoveIt): no state is in collision");
   }
-  // MoveIt moves a mimic joint with the joint it names; here it is planned on its own, so a path
-  // may hold a gripper's two fingers apart where the real ones cannot be.
-  for (const ArmJoint& j : model_->joints) {
-    if (!j.mimics.empty() && j.active >= 0) {
-      warnings_.push_back(file.robotPath + ": joint '" + j.name + "' mimics joint '" + j.mimics +
-                          "': mimic joints are planned as independent joints (the start state needs its position)");
-    }
-  }
   const PlanningSceneYaml sceneFile = readPlanningSceneYaml(file.scenePath);
   const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);
   allowedPlanningTime_ = request.allowedPlanningTime;
@@ -145,10 +137,28 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
                        model_->name + "' (neither the request's start_state nor the scene's robot_state gives one)");
     }
   }
+  // A mimic joint follows its leader, as in MoveIt: a start position given for it is not used,
+  // and one that disagrees with the leader's is said to be replaced.
+  const auto mimicJoint = [&](const std::string& name) -> const ArmJoint* {
+    for (const ArmJoint& j : model_->joints) {
+      if (j.name == name && j.mimicCoordinate >= 0) return &j;
+    }
+    return nullptr;
+  };
   for (const auto& [joint, value] : request.start) {
     bool known = false;
     for (std::size_t i = 0; i < dof && !known; ++i) known = model_->joints[model_->activeJoints[i]].name == joint;
-    if (!known) {
+    if (const ArmJoint* follower = mimicJoint(joint)) {
+      const double position = ArmModel::jointPosition(*follower, start_.data());
+      if (std::abs(position - value) > kArmGoalThresholdFloor) {
+        const auto line = request.startLines.find(joint);
+        std::ostringstream why;
+        why << at(file.requestPath, line != request.startLines.end() ? line->second : 0) << ": start joint '" << joint
+            << "' mimics joint '" << follower->mimics << "': it stands at " << position << " by that joint, not at "
+            << value << " as given";
+        warnings_.push_back(why.str());
+      }
+    } else if (!known) {
       const auto line = request.startLines.find(joint);
       warnings_.push_back(at(file.requestPath, line != request.startLines.end() ? line->second : 0) +
                           ": start joint '" + joint + "' is not a movable joint of robot '" + model_->name +
@@ -161,6 +171,10 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     std::size_t index = dof;
     for (std::size_t i = 0; i < dof; ++i) {
       if (model_->joints[model_->activeJoints[i]].name == joint) index = i;
+    }
+    if (const ArmJoint* follower = mimicJoint(joint); index == dof && follower) {
+      throw InputError(at(file.requestPath, constraint.line) + ": goal joint '" + joint + "' mimics joint '" +
+                       follower->mimics + "' of robot '" + model_->name + "': constrain the joint it follows");
     }
     if (index == dof) {
       throw InputError(at(file.requestPath, constraint.line) + ": goal joint '" + joint +

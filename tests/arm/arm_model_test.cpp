@@ -15,6 +15,7 @@
 #include "adsd/planner/arm_collision_pairs.h"
 #include "adsd/planner/arm_kinematics.h"
 #include "adsd/planner/arm_model.h"
+#include "adsd/planner/arm_motion_bound.h"
 #include "adsd/planner/arm_pair_sampling.h"
 #include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/primitive_meshes.h"
@@ -248,6 +249,101 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
     }
   }
   EXPECT_THROW(readUrdf(dir.path("absent.urdf")), InputError);
+}
+
+// A gripper whose second finger mimics the first (URDF <mimic>), as MoveIt moves it: one
+// coordinate drives both fingers, the second at multiplier x the first's position + offset.
+// Poses worked out by hand from the URDF's numbers.
+const char* kGripper = R"(<robot name="gripper">
+  <link name="palm"><collision><geometry><box size="0.1 0.1 0.02"/></geometry></collision></link>
+  <link name="left"><collision><geometry><box size="0.01 0.01 0.05"/></geometry></collision></link>
+  <link name="right"><collision><geometry><box size="0.01 0.01 0.05"/></geometry></collision></link>
+  <link name="thumb"><collision><origin xyz="0.05 0 0"/><geometry><box size="0.1 0.01 0.01"/></geometry></collision></link>
+  <joint name="left_finger" type="prismatic"><parent link="palm"/><child link="left"/>
+    <origin xyz="0.02 0 0.04"/><axis xyz="1 0 0"/><limit lower="0" upper="0.03" effort="1" velocity="1"/></joint>
+  <joint name="right_finger" type="prismatic"><parent link="palm"/><child link="right"/>
+    <origin xyz="-0.02 0 0.04"/><axis xyz="-1 0 0"/><limit lower="0" upper="0.03" effort="1" velocity="1"/>
+    <mimic joint="left_finger"/></joint>
+  <joint name="thumb_turn" type="revolute"><parent link="palm"/><child link="thumb"/>
+    <origin xyz="0 0.05 0"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>
+    <mimic joint="right_finger" multiplier="-20" offset="0.1"/></joint>
+</robot>
+)";
+
+TEST(ArmModel, MimicJointsFollowTheirLeader) {
+  test::ScratchDir dir;
+  const ArmModel m = readUrdf(dir.write("gripper.urdf", kGripper));
+  ASSERT_EQ(m.dof(), 1u);  // the two followers are not coordinates
+  EXPECT_EQ(m.jointIndex("left_finger"), 0u);
+  EXPECT_THROW(m.jointIndex("right_finger"), InputError);
+  const double q = 0.02;
+  std::vector<Pose> poses;
+  forwardKinematics(m, &q, poses);
+  // left: 0.02 along x from its origin at x 0.02; right: 0.02 along -x from x -0.02.
+  EXPECT_NEAR((poses[m.linkIndex("left")].translation() - Vec3(0.04, 0, 0.04)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((poses[m.linkIndex("right")].translation() - Vec3(-0.04, 0, 0.04)).norm(), 0.0, 1e-15);
+  // The thumb follows the right finger (which follows the left): -20 x 0.02 + 0.1 = -0.3 rad.
+  const Eigen::Matrix3d turn = poses[m.linkIndex("thumb")].linear();
+  EXPECT_NEAR(std::atan2(turn(1, 0), turn(0, 0)), -0.3, 1e-15);
+}
+
+// The certified motion bound counts each follower: a step of the one coordinate moves both
+// fingers, so they part by twice the step, and the thumb's tip (0.1 from its axis) turns by 20x.
+TEST(ArmMotionBound, MimicJointsMoveWithTheCoordinateTheyFollow) {
+  test::ScratchDir dir;
+  const ArmModel m = readUrdf(dir.write("gripper.urdf", kGripper));
+  const ArmMotionBound bound(m);
+  const double dq = 0.01;
+  const std::size_t left = m.linkIndex("left"), right = m.linkIndex("right"), thumb = m.linkIndex("thumb");
+  EXPECT_NEAR(bound.pairDisplacement(left, right, &dq), 2 * dq, 1e-15);
+  std::vector<double> moved(m.links.size());
+  bound.linkDisplacements(&dq, moved.data());
+  EXPECT_NEAR(moved[right], dq, 1e-15);
+  // The thumb's box reaches 0.1 along x and 0.005 across from its axis: |(0.1, 0.005)| x 20 x dq.
+  EXPECT_NEAR(moved[thumb], std::hypot(0.1, 0.005) * 20 * dq, 1e-15);
+  EXPECT_NEAR(bound.pairDisplacement(left, thumb, &dq), dq + std::hypot(0.1, 0.005) * 20 * dq, 1e-15);
+}
+
+TEST(ArmModel, MimicJointsThatCannotFollowAreRefusedNamingTheJoint) {
+  test::ScratchDir dir;
+  const std::string palm = R"(<link name="a"><collision><geometry><box size="1 1 1"/></geometry></collision></link>)"
+                           R"(<link name="b"/><link name="c"/>)";
+  const auto joint = [](const std::string& name, const std::string& type, const std::string& child,
+                        const std::string& mimic) {
+    return "<joint name=\"" + name + "\" type=\"" + type + "\"><parent link=\"a\"/><child link=\"" + child +
+           "\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>" + mimic +
+           "</joint>";
+  };
+  struct Case {
+    std::string file, text, mustSay;
+  };
+  const std::vector<Case> cases = {
+      {"no_leader.urdf", palm + joint("j1", "revolute", "b", "<mimic joint=\"zz\"/>") + joint("j2", "revolute", "c", ""),
+       "joint 'j1': <mimic joint='zz'> of joint 'j1' names no movable joint"},
+      {"mimic_cycle.urdf", palm + joint("j1", "revolute", "b", "<mimic joint=\"j2\"/>") +
+                               joint("j2", "revolute", "c", "<mimic joint=\"j1\"/>"), "comes back to itself"},
+      {"wrapping.urdf", palm + joint("j1", "continuous", "b", "") +
+                            joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"0.5\"/>"),
+       "joint 'j2': follows continuous joint 'j1' with multiplier 0.5"},
+      {"huge_multiplier.urdf", palm + joint("j1", "revolute", "b", "") +
+                                   joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"1e300\"/>"),
+       "multiplier and offset must be finite"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = dir.write(c.file, "<robot name=\"r\">" + c.text + "</robot>");
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << c.file << ": no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(c.file), std::string::npos) << c.file << ": " << what;
+      EXPECT_NE(what.find(c.mustSay), std::string::npos) << c.file << ": " << what;
+    }
+  }
+  // A whole multiple of a continuous joint's angle turns by whole turns where it wraps: accepted.
+  EXPECT_NO_THROW(readUrdf(dir.write("whole.urdf", "<robot name=\"r\">" + palm + joint("j1", "continuous", "b", "") +
+                                                       joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"-2\"/>") +
+                                                       "</robot>")));
 }
 
 // urdfdom logs and drops a <collision> element it cannot read, and reads on: the link went

@@ -480,9 +480,11 @@ TEST(ArmPlanningProblem, RobotMissingFromTheCacheNamesFetchRobots) {
   }
 }
 
-// A <mimic> joint (a gripper's second finger) is not made to follow the joint it names: the problem
-// says it is planned on its own, and the start state must give its position.
-TEST(ArmPlanningProblem, MimicJointIsWarnedOf) {
+// A <mimic> joint (a gripper's second finger) follows the joint it names, as in MoveIt: it is no
+// coordinate of the problem, a start position given for it that disagrees with its leader's is
+// said to be replaced, a goal on it is refused naming the joint to constrain, and `adsd plan`
+// solves with one coordinate.
+TEST(ArmPlanningProblem, MimicJointFollowsItsLeader) {
   const fs::path dir = workDirectory();
   std::ofstream(dir / "gripper.urdf")
       << "<robot name='gripper'>\n"
@@ -496,24 +498,51 @@ TEST(ArmPlanningProblem, MimicJointIsWarnedOf) {
          "    <origin xyz='-0.02 0 0.04'/><axis xyz='-1 0 0'/><limit lower='0' upper='0.03' effort='1' velocity='1'/>"
          "<mimic joint='left_finger'/></joint>\n"
          "</robot>\n";
-  std::ofstream(dir / "request.yaml") << "group_name: hand\n"
-                                         "start_state:\n  joint_state:\n    name: [left_finger, right_finger]\n"
-                                         "    position: [0, 0]\n"
-                                         "goal_constraints:\n  - joint_constraints:\n"
-                                         "      - {joint_name: left_finger, position: 0.02, tolerance_above: 0.001, "
-                                         "tolerance_below: 0.001}\n";
+  const auto request = [&](const std::string& startRight, const std::string& goalJoint) {
+    std::ofstream(dir / "request.yaml") << "group_name: hand\n"
+                                           "start_state:\n  joint_state:\n    name: [left_finger, right_finger]\n"
+                                           "    position: [0, " << startRight << "]\n"
+                                           "goal_constraints:\n  - joint_constraints:\n"
+                                           "      - {joint_name: " << goalJoint << ", position: 0.02, "
+                                           "tolerance_above: 0.001, tolerance_below: 0.001}\n";
+  };
   std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = gripper.urdf\nscene = "
                                      << kArmProblems << "/kr5_table_pick/scene.yaml\nrequest = request.yaml\n";
-  const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
-  EXPECT_EQ(p.model().dof(), 2u);
-  std::vector<std::string> mimicWarnings;
-  for (const std::string& w : p.warnings()) {
-    if (w.find("mimic") != std::string::npos) mimicWarnings.push_back(w);
+  const auto mimicWarnings = [](const ArmPlanningProblem& p) {
+    std::vector<std::string> found;
+    for (const std::string& w : p.warnings()) {
+      if (w.find("mimic") != std::string::npos) found.push_back(w);
+    }
+    return found;
+  };
+  request("0", "left_finger");
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
+    EXPECT_EQ(p.model().dof(), 1u);
+    EXPECT_TRUE(mimicWarnings(p).empty());
   }
-  ASSERT_EQ(mimicWarnings.size(), 1u);
-  EXPECT_EQ(mimicWarnings[0], (dir / "gripper.urdf").string() +
-                                  ": joint 'right_finger' mimics joint 'left_finger': mimic joints are planned as "
-                                  "independent joints (the start state needs its position)");
+  request("0.01", "left_finger");
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
+    const std::vector<std::string> w = mimicWarnings(p);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0], (dir / "request.yaml").string() +
+                        ":5: start joint 'right_finger' mimics joint 'left_finger': it stands at 0 by that joint, "
+                        "not at 0.01 as given");
+  }
+  request("0", "right_finger");
+  try {
+    ArmPlanningProblem(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
+    ADD_FAILURE() << "no error";
+  } catch (const adsd::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "request.yaml").string() +
+                                         ":8: goal joint 'right_finger' mimics joint 'left_finger' of robot "
+                                         "'gripper': constrain the joint it follows");
+  }
+  request("0", "left_finger");
+  const PlanRun r = plan({(dir / "problem.cfg").string(), "--seed", "1", "--path", (dir / "path.txt").string()}, dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(readAll(dir / "path.txt").find("# joints: left_finger\n"), std::string::npos) << readAll(dir / "path.txt");
 }
 
 // The slot problems are reached through the slot: start and goal valid (the constructor checks

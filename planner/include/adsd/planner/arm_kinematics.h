@@ -15,7 +15,8 @@ Pose jointMotion(const ArmJoint& joint, double q);
 
 /// \brief World pose of every link for the joint vector \p q (model.dof() values, in the model's
 /// joint order), with the root link at \p rootPose (default: the root's frame is the world frame):
-///   linkPoses[child] = linkPoses[parent] * joint.origin * jointMotion(joint, q).
+///   linkPoses[child] = linkPoses[parent] * joint.origin * jointMotion(joint, position),
+/// with each joint's position from ArmModel::jointPosition (a mimic joint follows its leader).
 /// \p linkPoses is resized to model.links.size(); once it has that size a call allocates nothing,
 /// so a caller (or a thread_local) keeps it between calls. Links come parents first, so one pass
 /// over the joints suffices.

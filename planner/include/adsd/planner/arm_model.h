@@ -30,10 +30,17 @@ struct ArmJoint {
   Vec3 axis = Vec3::UnitZ();        ///< unit vector, joint frame (URDF <axis>, normalized)
   double lower = 0.0;  ///< radians or metres; -pi for a continuous joint
   double upper = 0.0;  ///< radians or metres; +pi for a continuous joint
-  /// Position of this joint in the joint vector, or -1 for a fixed joint.
+  /// Position of this joint in the joint vector, or -1 for a fixed joint and a mimic joint.
   int active = -1;
-  /// The joint its URDF <mimic> names, or empty. Such a joint is not made to follow it: it is a
-  /// coordinate of the joint vector like any other (ArmPlanningProblem warns of it).
+  /// A mimic joint (URDF <mimic joint= multiplier= offset=>, a gripper's second finger) is not in
+  /// the joint vector: as in MoveIt, its position is
+  ///   mimicMultiplier * q[mimicCoordinate] + mimicOffset,
+  /// where coordinate mimicCoordinate is the joint it names, or the joint that one follows in
+  /// turn (the multipliers and offsets composed). -1 for a joint that is not a mimic joint.
+  int mimicCoordinate = -1;
+  double mimicMultiplier = 1.0;
+  double mimicOffset = 0.0;
+  /// The name of the joint its <mimic> names, or empty (for messages).
   std::string mimics;
 };
 
@@ -52,8 +59,9 @@ struct ArmLink {
 ///
 /// Links are stored depth first from the root, children in the order of their joints in the URDF
 /// file, so a link's parent always comes before it. joints[k] is the joint whose child is
-/// links[k + 1]. The joint vector holds one coordinate per non-fixed joint, in that same order
-/// (depth first from the root, URDF order among siblings); jointIndex() finds one by name.
+/// links[k + 1]. The joint vector holds one coordinate per non-fixed joint that is not a mimic
+/// joint, in that same order (depth first from the root, URDF order among siblings); jointIndex()
+/// finds one by name, jointPosition() gives any joint's position from it.
 /// Read-only once built, so any number of threads may use it.
 struct ArmModel {
   std::string name;        ///< the URDF's robot name
@@ -64,6 +72,13 @@ struct ArmModel {
   std::vector<std::size_t> activeJoints;
 
   std::size_t dof() const { return activeJoints.size(); }
+  /// \brief The position of \p joint (radians or metres) at joint vector \p q: its coordinate, a
+  /// mimic joint's multiple of its leader's, 0 for a fixed joint.
+  static double jointPosition(const ArmJoint& joint, const double* q) {
+    if (joint.active >= 0) return q[joint.active];
+    if (joint.mimicCoordinate >= 0) return joint.mimicMultiplier * q[joint.mimicCoordinate] + joint.mimicOffset;
+    return 0.0;
+  }
   /// \brief Joint-vector coordinate of the joint named \p name; throws InputError when there is
   /// no such non-fixed joint.
   std::size_t jointIndex(const std::string& name) const;
@@ -84,7 +99,10 @@ struct ArmModel {
 ///
 /// Throws adsd::InputError naming the file (and the link or joint) when the file does not parse,
 /// has a joint cycle or several roots, a floating, planar or unknown joint, a revolute or
-/// prismatic joint without finite limits (lower <= upper), or a mesh that cannot be found or read.
+/// prismatic joint without finite limits (lower <= upper), or a mesh that cannot be found or read;
+/// and for a <mimic> that names no movable joint, closes a cycle of mimic joints, has a multiplier
+/// or offset that is not finite within 1e75, or would jump where a continuous leader's angle wraps
+/// at +-pi (a prismatic follower, or a turning one whose multiplier is not a whole number).
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath = {});
 
 }  // namespace adsd::planner

@@ -34,12 +34,19 @@ namespace adsd::planner {
 ///   B_{L1,L2}(dq) = sum over joints i beyond exactly one of the two links' common chain of
 ///                   (K(L1, i) + K(L2, i)) |dq_i|
 /// (pairDisplacement): a wrist pair near contact then costs only the wrist joints' motion.
+///
+/// A mimic joint (ArmJoint::mimicCoordinate) moves |multiplier| times as far as the coordinate it
+/// follows, so it adds its own term, K(L, j) |multiplier| |dq_i|, to coordinate i's: for B_L
+/// summed into K(L, i), and for two links counted where exactly one of them lies beyond it (a
+/// gripper's two fingers, driven by one coordinate, move relative to each other by both joints).
+/// A prismatic mimic joint's stroke is its leader's range scaled and offset.
 class ArmMotionBound {
  public:
   explicit ArmMotionBound(const ArmModel& model);
 
-  /// \brief K(L, i): speed bound of link \p link per unit change of coordinate \p i.
-  double coefficient(std::size_t link, std::size_t i) const { return k_[link * dof_ + i]; }
+  /// \brief K(L, i): speed bound of link \p link per unit change of coordinate \p i (the mimic
+  /// joints that follow it included).
+  double coefficient(std::size_t link, std::size_t i) const { return coefficients_[link * dof_ + i]; }
   /// \brief B_L(dq) for every link into \p out (model.links.size() values; 0 for links without
   /// geometry and for links no moved joint carries).
   void linkDisplacements(const double* dq, double* out) const;
@@ -47,9 +54,17 @@ class ArmMotionBound {
   double pairDisplacement(std::size_t a, std::size_t b, const double* dq) const;
 
  private:
+  /// A joint that moves: one of the joint vector (rate 1), or a mimic joint (rate |multiplier|).
+  struct Mover {
+    std::size_t joint;       ///< index into ArmModel::joints
+    std::size_t coordinate;  ///< the joint-vector coordinate that drives it
+    double rate;             ///< its position's change per unit change of that coordinate
+  };
   std::size_t links_, dof_;
-  std::vector<double> k_;  ///< links_ x dof_, row-major
-  std::vector<char> beyond_;  ///< links_ x dof_: link lies beyond coordinate i's joint
+  std::vector<Mover> movers_;
+  std::vector<double> k_;  ///< links_ x movers_, row-major: K(L, joint) times the mover's rate
+  std::vector<char> beyond_;  ///< links_ x movers_: link lies beyond the mover's joint
+  std::vector<double> coefficients_;  ///< links_ x dof_: K(L, i), every mover of coordinate i summed
 };
 
 }  // namespace adsd::planner
