@@ -3,6 +3,7 @@
 /// \brief Where an arm path's clearance is measured: `adsd plan`'s summary and the arm viewer page
 /// (arm_viewer_html.h) take the same states, so the page's minimum is the printed one.
 
+#include <algorithm>
 #include <cmath>
 
 #include <ompl/geometric/PathGeometric.h>
@@ -15,12 +16,23 @@ namespace adsd::app {
 /// of the joint space's extent, tenths of a radian).
 constexpr double kArmClearanceStep = 0.01;
 
-/// \brief A copy of \p path interpolated to states at most kArmClearanceStep apart. What
+/// \brief At most this many states are measured along a path: a joint of wide limits (a turntable
+/// of +-1e9 rad) can make a path millions of steps long, whose measure would outlast any time
+/// limit and fill the memory with states. About a second of clearance queries on the shipped arms.
+constexpr double kMaxArmClearanceStates = 20000;
+
+/// \brief The spacing actually used along \p path: kArmClearanceStep, or wider on a path so long
+/// that it would need more than kMaxArmClearanceStates states.
+inline double armClearanceStep(const ompl::geometric::PathGeometric& path) {
+  return std::max(kArmClearanceStep, path.length() / (kMaxArmClearanceStates - 1));
+}
+
+/// \brief A copy of \p path interpolated to states at most armClearanceStep() apart. What
 /// adsd::planner::measurePath() measures on it is then the clearance at these states (its own
 /// interpolation to the validity-checking resolution adds none).
 inline ompl::geometric::PathGeometric armClearanceSamples(const ompl::geometric::PathGeometric& path) {
   ompl::geometric::PathGeometric dense(path);
-  dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / kArmClearanceStep)) + 1);
+  dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / armClearanceStep(path))) + 1);
   return dense;
 }
 

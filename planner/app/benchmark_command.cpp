@@ -47,6 +47,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -560,7 +561,7 @@ bool setQuietly(ob::Planner& planner, const Setting& s) {
 /// A planner of \p entry on \p si with the entry's parameters; warnings only when \p warn (they are
 /// the same for every combination).
 ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, ompl::geometric::SimpleSetup& ss, bool warn) {
-  if (const auto conflict = plannerObjectiveConflict(entry.name, ss.getOptimizationObjective().get())) {
+  if (const auto conflict = plannerConflict(entry.name, ss.getOptimizationObjective().get(), *ss.getStateSpace())) {
     throw InputError(entry.location.describe() + ": " + *conflict);
   }
   const ob::SpaceInformationPtr& si = ss.getSpaceInformation();
@@ -686,6 +687,49 @@ struct Tools {
   std::string plotter;
 };
 
+/// The problem and planners of every combination of checker and motion validator that \p a asks
+/// for, for \p input: building them reads every file and checks every planner, so that what is
+/// wrong with the input stops the command before a run. Prints the problem's warnings when \p warn.
+std::vector<std::unique_ptr<Combination>> buildCombinations(const BenchmarkArguments& a, const BenchmarkInput& input,
+                                                            bool warn) {
+  std::vector<std::unique_ptr<Combination>> combinations;
+  for (const CheckerKind checker : a.checkers) {
+    for (const MotionKind motion : a.motions) {
+      auto c = std::make_unique<Combination>();
+      c->checker = checker;
+      c->motion = motion;
+      CheckingOptions options;
+      options.checker = checker;
+      options.motion = motion;
+      c->problem = input.make(options);
+      const bool first = combinations.empty();
+      if (first && warn) {
+        for (const std::string& w : c->problem->warnings()) std::cerr << "adsd benchmark: warning: " << w << '\n';
+      }
+      c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), input.name);
+      Combination* self = c.get();
+      for (const PlannerEntry& entry : input.planners) {
+        ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->setup(), first && warn);
+        const std::string label = (entry.label != entry.name ? entry.label : planner->getName()) + " [" + c->label() + "]";
+        c->benchmark->addPlanner(
+            std::make_shared<MeasuredPlanner>(planner, label, [self](double seconds) { captureQueries(*self, seconds); }));
+      }
+      combinations.push_back(std::move(c));
+    }
+  }
+  return combinations;
+}
+
+/// The directory and file stem of \p input's log, database and plots.
+std::pair<fs::path, std::string> outputNames(const BenchmarkArguments& a, const BenchmarkInput& input) {
+  const fs::path directory = a.outDirectory ? fs::path(*a.outDirectory)
+                                            : (input.output ? fs::path(*input.output) : fs::path("."));
+  std::string stem = fileStem(input.name);
+  if (a.runRange) stem += ".runs-" + std::to_string(a.runRange->first) + "-" + std::to_string(a.runRange->second);
+  if (a.seed) stem += ".seed-" + std::to_string(*a.seed);
+  return {directory, stem};
+}
+
 /// Benchmarks one problem: its combinations, runs, log, database and plots.
 void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, const Tools& tools,
                   const std::optional<std::uint64_t>& seed) {
@@ -700,51 +744,26 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, cons
 
   // Everything that can be wrong with the input is found here, before any file is written.
   const std::vector<PlannerEntry>& entries = input.planners;
-  std::vector<std::unique_ptr<Combination>> combinations;
+  std::vector<std::unique_ptr<Combination>> combinations = buildCombinations(a, input, true);
   unsigned currentRun = 0;
   std::unique_ptr<ProgressBar> progress;
-  for (const CheckerKind checker : a.checkers) {
-    for (const MotionKind motion : a.motions) {
-      auto c = std::make_unique<Combination>();
-      c->checker = checker;
-      c->motion = motion;
-      CheckingOptions options;
-      options.checker = checker;
-      options.motion = motion;
-      c->problem = input.make(options);
-      const bool first = combinations.empty();
-      if (first) {
-        for (const std::string& w : c->problem->warnings()) std::cerr << "adsd benchmark: warning: " << w << '\n';
-      }
-      c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), input.name);
-      Combination* self = c.get();
-      for (const PlannerEntry& entry : entries) {
-        ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->setup(), first);
-        const std::string label = (entry.label != entry.name ? entry.label : planner->getName()) + " [" + c->label() + "]";
-        c->benchmark->addPlanner(
-            std::make_shared<MeasuredPlanner>(planner, label, [self](double seconds) { captureQueries(*self, seconds); }));
-      }
-      c->benchmark->setPreRunEvent([self, &currentRun, &progress, runCount](const ob::PlannerPtr& planner) {
-        // Benchmark has just reset the discrete validator's counters; ours are reset here.
-        self->problem->resetCounts();
-        self->atSolveEnd = RunQueries{};
-        progress->starting("run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount) + "  " +
-                           planner->getName());
-      });
-      c->benchmark->setPostRunEvent(
-          [self, &currentRun, &progress, firstRun](const ob::PlannerPtr&, ot::Benchmark::RunProperties& run) {
-            addRunProperties(*self, firstRun + currentRun, run);
-            progress->finished();
-          });
-      combinations.push_back(std::move(c));
-    }
+  for (const std::unique_ptr<Combination>& c : combinations) {
+    Combination* self = c.get();
+    c->benchmark->setPreRunEvent([self, &currentRun, &progress, runCount](const ob::PlannerPtr& planner) {
+      // Benchmark has just reset the discrete validator's counters; ours are reset here.
+      self->problem->resetCounts();
+      self->atSolveEnd = RunQueries{};
+      progress->starting("run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount) + "  " +
+                         planner->getName());
+    });
+    c->benchmark->setPostRunEvent(
+        [self, &currentRun, &progress, firstRun](const ob::PlannerPtr&, ot::Benchmark::RunProperties& run) {
+          addRunProperties(*self, firstRun + currentRun, run);
+          progress->finished();
+        });
   }
 
-  const fs::path directory = a.outDirectory ? fs::path(*a.outDirectory)
-                                            : (input.output ? fs::path(*input.output) : fs::path("."));
-  std::string stem = fileStem(input.name);
-  if (a.runRange) stem += ".runs-" + std::to_string(a.runRange->first) + "-" + std::to_string(a.runRange->second);
-  if (a.seed) stem += ".seed-" + std::to_string(*a.seed);
+  const auto [directory, stem] = outputNames(a, input);
   std::error_code error;
   fs::create_directories(directory, error);
   if (error || !fs::is_directory(directory) || ::access(directory.c_str(), W_OK) != 0) {
@@ -857,6 +876,20 @@ int benchmark(const std::vector<std::string>& args) {
   std::optional<std::uint64_t> seed = a.seed;
   if (!seed && a.runRange) seed = a.runRange->first + kShardSeedOffset;
   if (seed) ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(*seed));
+  // Several problems (a directory): each one's outputs must have a name of their own, and each one
+  // is built once before any runs, so that a bad one stops the command before the others' runs.
+  if (inputs.size() > 1) {
+    std::map<fs::path, const BenchmarkInput*> byOutput;
+    for (const BenchmarkInput& input : inputs) {
+      const auto [directory, stem] = outputNames(a, input);
+      const auto [it, added] = byOutput.emplace(fs::absolute(directory / stem).lexically_normal(), &input);
+      if (!added) {
+        throw InputError(input.path + ": its results would overwrite those of " + it->second->path + " (both named '" +
+                         input.name + "': give each problem its own `name =` in [problem])");
+      }
+    }
+    for (const BenchmarkInput& input : inputs) buildCombinations(a, input, false);
+  }
   for (const BenchmarkInput& input : inputs) benchmarkOne(a, input, tools, seed);
   return 0;
 }

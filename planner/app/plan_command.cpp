@@ -127,7 +127,7 @@ const char* name(ObjectiveKind k) { return k == ObjectiveKind::length ? "length"
 /// The planner named \p chosen for \p ss's objective, or an InputError listing the known names
 /// (or saying why this planner cannot take that objective).
 ompl::base::PlannerPtr makeNamedPlanner(const std::string& chosen, ompl::geometric::SimpleSetup& ss) {
-  if (const auto conflict = plannerObjectiveConflict(chosen, ss.getOptimizationObjective().get())) {
+  if (const auto conflict = plannerConflict(chosen, ss.getOptimizationObjective().get(), *ss.getStateSpace())) {
     throw InputError("--planner: " + *conflict);
   }
   ompl::base::PlannerPtr planner = makePlanner(chosen, ss.getSpaceInformation());
@@ -284,7 +284,8 @@ int planArm(const PlanArguments& a) {
   if (!r.solved) return 1;
 
   const ompl::geometric::PathGeometric& path = ss.getSolutionPath();
-  // The clearance at states kArmClearanceStep apart along the path (a copy).
+  // The clearance at states armClearanceStep() apart along the path (a copy).
+  const double step = armClearanceStep(path);
   const PathMeasures measures = measurePath(armClearanceSamples(path), *problem.checker());
   const auto& space = problem.spaceInformation()->getStateSpace();
   std::printf("path        %zu states, length %.6g (joint space: the sum of the joints' absolute changes)\n",
@@ -293,7 +294,7 @@ int planArm(const PlanArguments& a) {
   if (std::isfinite(measures.minClearance)) {
     std::printf("clearance   min %.6g m, mean %.6g m (%s, at %zu states: the path interpolated every %g in joint space)\n",
                 measures.minClearance, measures.meanClearance, a.checker == CheckerKind::adsd ? "exact" : "FCL's distance",
-                measures.statesSampled, kArmClearanceStep);
+                measures.statesSampled, step);
   } else {
     std::printf("clearance   none measured: nothing for the links to collide with\n");
   }
@@ -301,7 +302,7 @@ int planArm(const PlanArguments& a) {
   // objective so that runs with both compare.
   std::shared_ptr<const ArmMotionClearance> objective = problem.objectiveClearance();
   if (!objective) objective = std::make_shared<const ArmMotionClearance>(problem.checker());
-  const ArmPathClearance obstacles = measureArmPathClearance(path, *objective, kArmClearanceStep);
+  const ArmPathClearance obstacles = measureArmPathClearance(path, *objective, step);
   if (std::isfinite(obstacles.min)) {
     std::printf("obstacles   clearance min %.6g m, mean %.6g m (exact, the same states; the links against the obstacles, "
                 "what --objective clearance maximizes), certified >= %.6g m along the path\n",

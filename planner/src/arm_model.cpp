@@ -375,6 +375,11 @@ void resolveMimicJoints(const urdf::ModelInterface& urdf, const std::string& urd
              "can follow a continuous one)";
       throw InputError(why.str());
     }
+    if (lead.locked) {  // a locked leader locks its followers
+      joint.locked = true;
+      joint.lockedPosition = multiplier * lead.lockedPosition + offset;
+      continue;
+    }
     joint.mimicCoordinate = lead.active;
     joint.mimicMultiplier = multiplier;
     joint.mimicOffset = offset;
@@ -409,7 +414,11 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
     if (linkIndex > 0) {
       model.joints.push_back(convertJoint(*visit.link->parent_joint, visit.parentLink, linkIndex, urdfPath, outline));
       link.parentJoint = static_cast<int>(model.joints.size() - 1);
-      if (model.joints.back().type != ArmJointType::fixed && !visit.link->parent_joint->mimic) {
+      ArmJoint& joint = model.joints.back();
+      joint.locked = joint.type != ArmJointType::fixed && joint.type != ArmJointType::continuous &&
+                     joint.lower == joint.upper && !visit.link->parent_joint->mimic;
+      if (joint.locked) joint.lockedPosition = joint.lower;
+      if (joint.type != ArmJointType::fixed && !joint.locked && !visit.link->parent_joint->mimic) {
         model.activeJoints.push_back(model.joints.size() - 1);
         model.joints.back().active = static_cast<int>(model.activeJoints.size() - 1);
       }

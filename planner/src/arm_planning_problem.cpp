@@ -133,29 +133,48 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     } else if (const auto d = sceneFile.defaultJointValues.find(joint); d != sceneFile.defaultJointValues.end()) {
       start_[i] = d->second;
     } else {
-      throw InputError(file.requestPath + ": the start state has no position for joint '" + joint + "' of robot '" +
-                       model_->name + "' (neither the request's start_state nor the scene's robot_state gives one)");
+      // A misspelled name is the likely cause: name the start's joints the robot lacks, at their line.
+      std::string unknown;
+      int line = 0;
+      for (const auto& [given, position] : request.start) {
+        bool movable = false;
+        for (std::size_t k = 0; k < dof && !movable; ++k) movable = model_->joints[model_->activeJoints[k]].name == given;
+        bool exists = movable;
+        for (const ArmJoint& j : model_->joints) exists = exists || j.name == given;
+        if (exists) continue;
+        unknown += (unknown.empty() ? "'" : ", '") + given + "'";
+        if (const auto l = request.startLines.find(given); l != request.startLines.end() && line == 0) line = l->second;
+      }
+      throw InputError(at(file.requestPath, line) + ": the start state has no position for joint '" + joint +
+                       "' of robot '" + model_->name + "' (neither the request's start_state nor the scene's " +
+                       "robot_state gives one" +
+                       (unknown.empty() ? std::string(")") : "; the start_state names " + unknown + ", which the robot lacks)"));
     }
   }
-  // A mimic joint follows its leader, as in MoveIt: a start position given for it is not used,
-  // and one that disagrees with the leader's is said to be replaced.
-  const auto mimicJoint = [&](const std::string& name) -> const ArmJoint* {
+  // A mimic joint follows its leader, as in MoveIt, and a locked joint (equal limits) stands at its
+  // limit: a start position given for either is not used, and one that disagrees is said to be
+  // replaced.
+  const auto dependentJoint = [&](const std::string& name) -> const ArmJoint* {
     for (const ArmJoint& j : model_->joints) {
-      if (j.name == name && j.mimicCoordinate >= 0) return &j;
+      if (j.name == name && (j.mimicCoordinate >= 0 || j.locked)) return &j;
     }
     return nullptr;
+  };
+  const auto standsBy = [](const ArmJoint& j) {
+    return j.locked ? std::string(j.mimics.empty() ? "its limits, which are equal"
+                                                   : "joint '" + j.mimics + "', which is locked")
+                    : "joint '" + j.mimics + "', which it mimics";
   };
   for (const auto& [joint, value] : request.start) {
     bool known = false;
     for (std::size_t i = 0; i < dof && !known; ++i) known = model_->joints[model_->activeJoints[i]].name == joint;
-    if (const ArmJoint* follower = mimicJoint(joint)) {
-      const double position = ArmModel::jointPosition(*follower, start_.data());
+    if (const ArmJoint* dependent = dependentJoint(joint)) {
+      const double position = ArmModel::jointPosition(*dependent, start_.data());
       if (std::abs(position - value) > kArmGoalThresholdFloor) {
         const auto line = request.startLines.find(joint);
         std::ostringstream why;
         why << at(file.requestPath, line != request.startLines.end() ? line->second : 0) << ": start joint '" << joint
-            << "' mimics joint '" << follower->mimics << "': it stands at " << position << " by that joint, not at "
-            << value << " as given";
+            << "' stands at " << position << " by " << standsBy(*dependent) << ", not at " << value << " as given";
         warnings_.push_back(why.str());
       }
     } else if (!known) {
@@ -172,9 +191,21 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     for (std::size_t i = 0; i < dof; ++i) {
       if (model_->joints[model_->activeJoints[i]].name == joint) index = i;
     }
-    if (const ArmJoint* follower = mimicJoint(joint); index == dof && follower) {
-      throw InputError(at(file.requestPath, constraint.line) + ": goal joint '" + joint + "' mimics joint '" +
-                       follower->mimics + "' of robot '" + model_->name + "': constrain the joint it follows");
+    if (const ArmJoint* dependent = dependentJoint(joint); index == dof && dependent) {
+      if (dependent->mimicCoordinate >= 0) {
+        throw InputError(at(file.requestPath, constraint.line) + ": goal joint '" + joint + "' mimics joint '" +
+                         dependent->mimics + "' of robot '" + model_->name + "': constrain the joint it follows");
+      }
+      // A locked joint: the goal may name it where it stands.
+      if (constraint.position - constraint.toleranceBelow <= dependent->lockedPosition &&
+          dependent->lockedPosition <= constraint.position + constraint.toleranceAbove) {
+        continue;
+      }
+      std::ostringstream why;
+      why << at(file.requestPath, constraint.line) << ": goal joint '" << joint << "' stands at "
+          << dependent->lockedPosition << " by " << standsBy(*dependent) << ": the goal's " << constraint.position
+          << " cannot be reached";
+      throw InputError(why.str());
     }
     if (index == dof) {
       throw InputError(at(file.requestPath, constraint.line) + ": goal joint '" + joint +

@@ -1,7 +1,10 @@
 #include "adsd/planner/arm_state_space.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include <ompl/base/ProjectionEvaluator.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 
 #include "adsd/error.h"
@@ -9,6 +12,37 @@
 namespace adsd::planner {
 
 namespace ob = ompl::base;
+
+namespace {
+
+/// The first few coordinates of an arm's joint vector, as they are (a continuous joint's angle in
+/// [-pi, pi)).
+class LeadingJointsProjection : public ob::ProjectionEvaluator {
+ public:
+  LeadingJointsProjection(const ArmStateSpace* space, std::size_t count)
+      : ob::ProjectionEvaluator(space), arm_(space), count_(count) {}
+
+  unsigned int getDimension() const override { return static_cast<unsigned int>(count_); }
+
+  void defaultCellSizes() override {
+    // OMPL's own choice for a bounded real vector: a twentieth of each coordinate's range.
+    cellSizes_.resize(count_);
+    for (std::size_t i = 0; i < count_; ++i) {
+      cellSizes_[i] = arm_->getSubspace(static_cast<unsigned>(i))->getMaximumExtent() / 20.0;
+      if (!(cellSizes_[i] > 0.0)) cellSizes_[i] = 1.0;  // a locked joint: one cell
+    }
+  }
+
+  void project(const ob::State* state, Eigen::Ref<Eigen::VectorXd> projection) const override {
+    for (std::size_t i = 0; i < count_; ++i) projection(static_cast<Eigen::Index>(i)) = arm_->coordinate(state, i);
+  }
+
+ private:
+  const ArmStateSpace* arm_;
+  std::size_t count_;
+};
+
+}  // namespace
 
 ArmStateSpace::ArmStateSpace(const ArmModel& model) {
   if (model.dof() == 0) throw InputError(model.sourceFile + ": the robot has no movable joint to plan for");
@@ -31,12 +65,14 @@ ArmStateSpace::ArmStateSpace(const ArmModel& model) {
   lock();
 }
 
-void ArmStateSpace::toJoints(const ob::State* state, double* q) const {
+double ArmStateSpace::coordinate(const ob::State* state, std::size_t i) const {
   const auto* s = state->as<ob::CompoundState>();
-  for (std::size_t i = 0; i < continuous_.size(); ++i) {
-    q[i] = continuous_[i] ? s->as<ob::SO2StateSpace::StateType>(static_cast<unsigned>(i))->value
-                          : s->as<ob::RealVectorStateSpace::StateType>(static_cast<unsigned>(i))->values[0];
-  }
+  return continuous_[i] ? s->as<ob::SO2StateSpace::StateType>(static_cast<unsigned>(i))->value
+                        : s->as<ob::RealVectorStateSpace::StateType>(static_cast<unsigned>(i))->values[0];
+}
+
+void ArmStateSpace::toJoints(const ob::State* state, double* q) const {
+  for (std::size_t i = 0; i < continuous_.size(); ++i) q[i] = coordinate(state, i);
 }
 
 void ArmStateSpace::fromJoints(const double* q, ob::State* state) const {
@@ -69,6 +105,11 @@ void ArmStateSpace::jointSteps(const ob::State* from, const ob::State* to, doubl
               a->as<ob::RealVectorStateSpace::StateType>(k)->values[0];
     }
   }
+}
+
+void ArmStateSpace::registerProjections() {
+  registerDefaultProjection(
+      std::make_shared<LeadingJointsProjection>(this, std::min<std::size_t>(kProjectedJoints, dof())));
 }
 
 }  // namespace adsd::planner

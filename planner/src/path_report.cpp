@@ -8,6 +8,7 @@
 #include <functional>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
@@ -46,8 +47,16 @@ ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& p
   for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i) {
     m.certifiedMin = std::min(m.certifiedMin, clearance.along(path.getState(i), path.getState(i + 1)).lower);
   }
+  // More states than this would not fit the interpolation's count, nor the memory.
+  const double states = std::ceil(path.length() / step) + 1;
+  if (!(states <= kMaxMeasuredStates)) {
+    std::ostringstream why;
+    why << "measuring a path of length " << path.length() << " every " << step << " would take " << states
+        << " states, more than " << kMaxMeasuredStates;
+    throw InputError(why.str());
+  }
   ompl::geometric::PathGeometric dense(path);
-  dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / step)) + 1);
+  dense.interpolate(static_cast<unsigned>(states));
   double sum = 0.0;
   for (std::size_t i = 0; i < dense.getStateCount(); ++i) {
     const double c = clearance.at(dense.getState(i));

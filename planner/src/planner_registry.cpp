@@ -1,6 +1,7 @@
 #include "adsd/planner/planner_registry.h"
 
 #include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 
 #include <algorithm>
 #include <functional>
@@ -109,12 +110,28 @@ bool isOptimizingPlanner(const std::string& name) {
   return std::find(optimizing.begin(), optimizing.end(), name) != optimizing.end();
 }
 
-std::optional<std::string> plannerObjectiveConflict(const std::string& name,
-                                                    const ompl::base::OptimizationObjective* objective) {
+std::optional<std::string> plannerConflict(const std::string& name, const ompl::base::OptimizationObjective* objective,
+                                           const ompl::base::StateSpace& space) {
   const bool clearance = dynamic_cast<const ompl::base::MaximizeMinClearanceObjective*>(objective) != nullptr;
   if (clearance && (name == "fmt" || name == "bfmt")) {
     return "planner " + name + " cannot plan for the clearance objective (OMPL's FMT* and BFMT* crash with it); " +
            "use rrtstar, informedrrtstar, bitstar or prmstar";
+  }
+  if (clearance && (name == "trrt" || name == "bitrrt")) {
+    return "planner " + name + " cannot plan for the clearance objective (OMPL's TRRT and BiTRRT keep the " +
+           "objective's cost low along the tree, and the clearance objective's cost is a clearance to keep high: " +
+           "they time out); use rrtstar, informedrrtstar, bitstar or prmstar";
+  }
+  // No objective is OMPL's default, path length.
+  const bool lengthObjective =
+      objective == nullptr || dynamic_cast<const ompl::base::PathLengthOptimizationObjective*>(objective) != nullptr;
+  const int type = space.getType();
+  const bool informedSpace = type == ompl::base::STATE_SPACE_REAL_VECTOR || type == ompl::base::STATE_SPACE_SE2 ||
+                             type == ompl::base::STATE_SPACE_SE3;
+  if (lengthObjective && !informedSpace && (name == "informedrrtstar" || name == "bitstar" || name == "cforest")) {
+    return "planner " + name + " cannot plan for path length in this state space (" + space.getName() +
+           "): OMPL's informed sampling, which it uses, works only in real-vector, SE(2) and SE(3) spaces; use " +
+           "rrtstar, rrtsharp or prmstar, or --objective clearance";
   }
   return std::nullopt;
 }

@@ -5,7 +5,9 @@ usage: arm_benchmark_test.py --adsd PROGRAM --problems problems/arm --work DIR
 
 Checks: one arm problem with --runs 2 --time 1 writes a log and a database whose runs hold every
 checker x motion validator combination with our run properties (checker, motion validator, validity
-checks, ...); a directory of arm problems writes one log per problem. Exits 77 (skipped) naming
+checks, ...); a directory of arm problems writes one log per problem, and is refused before any run
+when two problems share a name or a later one is bad; KPIECE and SBL run (the arm space's projection)
+and CForest is refused. Exits 77 (skipped) naming
 problems/data/fetch_robots.sh when the robots are not cached.
 """
 import argparse
@@ -94,6 +96,41 @@ def main():
     if check(p.returncode == 0, "a directory: exit %d\n%s%s" % (p.returncode, p.stdout, p.stderr)):
         for name in ("a_first", "b_second"):
             check(os.path.isfile(os.path.join(out, name + ".log")), "no log for " + name)
+
+    # Two problems of one name would write the same files: refused before any run, naming both.
+    same = os.path.join(args.work, "same")
+    for name in ("a", "b"):
+        os.makedirs(os.path.join(same, name))
+        with open(os.path.join(same, name, "problem.cfg"), "w") as f:
+            f.write("[problem]\nrobot = ${ADSD_ROBOTS}/wam/wam.urdf\nsrdf = %s/../wam.srdf\n"
+                    "scene = %s/scene.yaml\nrequest = %s/request.yaml\npackage_path = ${ADSD_ROBOTS}\n"
+                    % (shipped, shipped, shipped))
+    out = os.path.join(args.work, "same_out")
+    p = run(args.adsd, [same, "--runs", "1", "--time", "0.5", "--out", out, "--log-only"])
+    check(p.returncode == 2 and "would overwrite" in p.stderr and os.path.join("a", "problem.cfg") in p.stderr,
+          "two problems of one name: exit %d, %r" % (p.returncode, p.stderr))
+    check(not os.path.exists(os.path.join(out, "problem.log")), "two problems of one name: a run was made")
+
+    # A bad problem after a good one stops the command before the good one's runs.
+    with open(os.path.join(folders, "b_second", "problem.cfg"), "a") as f:
+        f.write("robot = ${ADSD_ROBOTS}/wam/no_such.urdf\n")
+    out = os.path.join(args.work, "later_bad")
+    p = run(args.adsd, [folders, "--runs", "1", "--time", "0.5", "--out", out, "--log-only"])
+    check(p.returncode == 2 and "b_second" in p.stderr, "a bad second problem: exit %d, %r" % (p.returncode, p.stderr))
+    check(not os.path.exists(os.path.join(out, "a_first.log")), "a bad second problem: the first one was run")
+
+    # The grid planners have a projection of the arm's joints (KPIECE solves); planners OMPL's
+    # informed sampling stops in an arm's joint space are refused before any run (CForest aborted
+    # the program).
+    out = os.path.join(args.work, "planners")
+    p = run(args.adsd, [cfg, "--planner", "kpiece,sbl", "--runs", "1", "--time", "1", "--checker", "adsd",
+                        "--motion", "discrete", "--out", out, "--log-only"])
+    check(p.returncode == 0, "kpiece and sbl: exit %d\n%s%s" % (p.returncode, p.stdout, p.stderr))
+    out = os.path.join(args.work, "refused")
+    p = run(args.adsd, [cfg, "--planner", "rrtconnect,cforest", "--runs", "1", "--time", "1", "--out", out])
+    check(p.returncode == 2 and "cforest cannot plan for path length in this state space" in p.stderr,
+          "cforest: exit %d, %r" % (p.returncode, p.stderr))
+    check(not os.path.exists(out), "cforest: wrote " + out)
 
     # Bad input: an unknown planner is a usage error before anything is written.
     out = os.path.join(args.work, "bad")

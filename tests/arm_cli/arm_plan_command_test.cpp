@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include "adsd/error.h"
+#include "adsd/planner/arm_kinematics.h"
 #include "adsd/planner/arm_planning_problem.h"
 #include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/features.h"
@@ -415,9 +416,12 @@ TEST(ArmPlanningProblem, JointWithoutAStartValueNamesTheRequest) {
                        CheckingOptions{});
     FAIL() << "no error";
   } catch (const adsd::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find((dir / "request.yaml").string() + ": the start state has no position for "
+    // The misspelled name is named, at its line.
+    EXPECT_NE(std::string(e.what()).find((dir / "request.yaml").string() + ":9: the start state has no position for "
                                          "joint 'wrist_roll'"),
               std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("the start_state names 'gripper', which the robot lacks"), std::string::npos)
         << e.what();
   }
 }
@@ -527,7 +531,7 @@ TEST(ArmPlanningProblem, MimicJointFollowsItsLeader) {
     const std::vector<std::string> w = mimicWarnings(p);
     ASSERT_EQ(w.size(), 1u);
     EXPECT_EQ(w[0], (dir / "request.yaml").string() +
-                        ":5: start joint 'right_finger' mimics joint 'left_finger': it stands at 0 by that joint, "
+                        ":5: start joint 'right_finger' stands at 0 by joint 'left_finger', which it mimics, "
                         "not at 0.01 as given");
   }
   request("0", "right_finger");
@@ -543,6 +547,70 @@ TEST(ArmPlanningProblem, MimicJointFollowsItsLeader) {
   const PlanRun r = plan({(dir / "problem.cfg").string(), "--seed", "1", "--path", (dir / "path.txt").string()}, dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(readAll(dir / "path.txt").find("# joints: left_finger\n"), std::string::npos) << readAll(dir / "path.txt");
+}
+
+// A joint whose limits are equal (locked) stands at them: it is no coordinate (OMPL cannot plan
+// over a range of zero width, and stopped with an internal error), the start and goal may name it
+// where it stands, and a goal elsewhere is refused naming its line.
+TEST(ArmPlanningProblem, LockedJointStandsAtItsLimits) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "locked.urdf")
+      << "<robot name='locked'>\n"
+         "  <link name='base'><collision><geometry><box size='0.2 0.2 0.2'/></geometry></collision></link>\n"
+         "  <link name='a'/>\n"
+         "  <link name='arm'><collision><origin xyz='0.5 0 0'/><geometry><box size='1 0.1 0.1'/></geometry>"
+         "</collision></link>\n"
+         "  <joint name='held' type='revolute'><parent link='base'/><child link='a'/><origin xyz='0 0 1'/>"
+         "<axis xyz='0 0 1'/><limit lower='0.5' upper='0.5' effort='1' velocity='1'/></joint>\n"
+         "  <joint name='swing' type='revolute'><parent link='a'/><child link='arm'/><axis xyz='0 1 0'/>"
+         "<limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
+         "</robot>\n";
+  const auto request = [&](const std::string& startHeld, const std::string& goalHeld) {
+    std::ofstream(dir / "request.yaml") << "group_name: arm\nstart_state:\n  joint_state:\n    name: [held, swing]\n"
+                                           "    position: [" << startHeld << ", 0]\n"
+                                           "goal_constraints:\n  - joint_constraints:\n"
+                                           "      - {joint_name: swing, position: 0.8, tolerance_above: 0.001, "
+                                           "tolerance_below: 0.001}\n"
+                                           "      - {joint_name: held, position: " << goalHeld << ", "
+                                           "tolerance_above: 0.001, tolerance_below: 0.001}\n";
+  };
+  std::ofstream(dir / "scene.yaml") << "name: empty\nworld:\n  collision_objects: []\n";
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = locked.urdf\nscene = scene.yaml\n"
+                                        "request = request.yaml\n";
+  const std::string cfg = (dir / "problem.cfg").string();
+  request("0.5", "0.5");
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    EXPECT_EQ(p.model().dof(), 1u);
+    EXPECT_TRUE(p.warnings().empty()) << p.warnings().front();
+    // The arm hangs from z 1, turned 0.5 rad about z by the locked joint, whatever the swing.
+    std::vector<adsd::Pose> poses;
+    const double swing = 0.3;
+    forwardKinematics(p.model(), &swing, poses);
+    const adsd::Vec3 x = poses[p.model().linkIndex("arm")].linear().col(0);
+    EXPECT_NEAR(std::atan2(x.y(), x.x()), 0.5, 1e-15);
+  }
+  request("0.3", "0.5");
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    ASSERT_EQ(p.warnings().size(), 1u);
+    EXPECT_EQ(p.warnings()[0], (dir / "request.yaml").string() +
+                                   ":5: start joint 'held' stands at 0.5 by its limits, which are equal, not at 0.3 "
+                                   "as given");
+  }
+  request("0.5", "0.7");
+  try {
+    ArmPlanningProblem(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    ADD_FAILURE() << "no error";
+  } catch (const adsd::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "request.yaml").string() +
+                                         ":9: goal joint 'held' stands at 0.5 by its limits, which are equal: the "
+                                         "goal's 0.7 cannot be reached");
+  }
+  request("0.5", "0.5");
+  const PlanRun r = plan({cfg, "--seed", "1"}, dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("solved      yes"), std::string::npos) << r.out;
 }
 
 // The slot problems are reached through the slot: start and goal valid (the constructor checks

@@ -30,8 +30,14 @@ struct ArmJoint {
   Vec3 axis = Vec3::UnitZ();        ///< unit vector, joint frame (URDF <axis>, normalized)
   double lower = 0.0;  ///< radians or metres; -pi for a continuous joint
   double upper = 0.0;  ///< radians or metres; +pi for a continuous joint
-  /// Position of this joint in the joint vector, or -1 for a fixed joint and a mimic joint.
+  /// Position of this joint in the joint vector, or -1 for a fixed, a locked and a mimic joint.
   int active = -1;
+  /// A revolute or prismatic joint whose limits are equal (lower == upper, a joint a description
+  /// locks) stands there always: it is no coordinate of the joint vector (OMPL cannot sample or
+  /// interpolate a range of zero width), and this is its position. So is a mimic joint's whose
+  /// leader is locked.
+  bool locked = false;
+  double lockedPosition = 0.0;
   /// A mimic joint (URDF <mimic joint= multiplier= offset=>, a gripper's second finger) is not in
   /// the joint vector: as in MoveIt, its position is
   ///   mimicMultiplier * q[mimicCoordinate] + mimicOffset,
@@ -59,8 +65,8 @@ struct ArmLink {
 ///
 /// Links are stored depth first from the root, children in the order of their joints in the URDF
 /// file, so a link's parent always comes before it. joints[k] is the joint whose child is
-/// links[k + 1]. The joint vector holds one coordinate per non-fixed joint that is not a mimic
-/// joint, in that same order (depth first from the root, URDF order among siblings); jointIndex()
+/// links[k + 1]. The joint vector holds one coordinate per non-fixed joint that is neither locked
+/// nor a mimic joint, in that same order (depth first from the root, URDF order among siblings); jointIndex()
 /// finds one by name, jointPosition() gives any joint's position from it.
 /// Read-only once built, so any number of threads may use it.
 struct ArmModel {
@@ -73,11 +79,11 @@ struct ArmModel {
 
   std::size_t dof() const { return activeJoints.size(); }
   /// \brief The position of \p joint (radians or metres) at joint vector \p q: its coordinate, a
-  /// mimic joint's multiple of its leader's, 0 for a fixed joint.
+  /// mimic joint's multiple of its leader's, a locked joint's lockedPosition, 0 for a fixed joint.
   static double jointPosition(const ArmJoint& joint, const double* q) {
     if (joint.active >= 0) return q[joint.active];
     if (joint.mimicCoordinate >= 0) return joint.mimicMultiplier * q[joint.mimicCoordinate] + joint.mimicOffset;
-    return 0.0;
+    return joint.lockedPosition;
   }
   /// \brief Joint-vector coordinate of the joint named \p name; throws InputError when there is
   /// no such non-fixed joint.

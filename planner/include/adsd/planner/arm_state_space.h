@@ -25,6 +25,8 @@ class ArmStateSpace : public ompl::base::CompoundStateSpace {
   /// \brief Throws adsd::InputError when the model has no movable joint.
   explicit ArmStateSpace(const ArmModel& model);
 
+  /// \brief Coordinate \p i of the state's joint vector.
+  double coordinate(const ompl::base::State* state, std::size_t i) const;
   /// \brief Writes the state's joint vector into \p q (dof() values).
   void toJoints(const ompl::base::State* state, double* q) const;
   /// \brief Sets the state from the joint vector \p q (a continuous joint's angle is wrapped
@@ -35,6 +37,13 @@ class ArmStateSpace : public ompl::base::CompoundStateSpace {
   void jointSteps(const ompl::base::State* from, const ompl::base::State* to, double* dq) const;
 
   std::size_t dof() const { return continuous_.size(); }
+
+  /// \brief Registers the default projection that OMPL's grid-based planners (KPIECE, BKPIECE,
+  /// LBKPIECE, SBL, STRIDE, PDST) need: the first kProjectedJoints coordinates, the joints nearest
+  /// the base, which move the most of the arm (MoveIt's default for an arm group too), each in
+  /// cells of 1/20 of its range.
+  void registerProjections() override;
+  static constexpr std::size_t kProjectedJoints = 2;
 
  private:
   std::vector<bool> continuous_;

@@ -36,9 +36,13 @@ struct ArmPathClearance {
   double certifiedMin = 0.0;  ///< a lower bound of the least clearance anywhere along the path
 };
 
+/// \brief The most states measureArmPathClearance interpolates a path to.
+constexpr double kMaxMeasuredStates = 1e7;
+
 /// \brief Measures \p path with \p clearance: its exact clearance at the path's states
 /// interpolated \p step apart (the space's distance; a copy is interpolated), and the least of
-/// its motions' certified lower bounds (ArmMotionClearance::along).
+/// its motions' certified lower bounds (ArmMotionClearance::along). Throws adsd::InputError when
+/// that would take more than kMaxMeasuredStates states.
 ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& path,
                                          const ArmMotionClearance& clearance, double step);
 

@@ -22,10 +22,17 @@ ompl::base::PlannerPtr makePlanner(const std::string& name, const ompl::base::Sp
 /// ones that use an optimization objective).
 bool isOptimizingPlanner(const std::string& name);
 
-/// \brief Why planner \p name cannot plan for \p objective, or nullopt when it can. OMPL's FMT*
-/// and BFMT* with the clearance objective (MaximizeMinClearanceObjective) end in a segmentation
-/// fault when the planner is freed, in 1.5.2 as planned or benchmarked here.
-std::optional<std::string> plannerObjectiveConflict(const std::string& name,
-                                                    const ompl::base::OptimizationObjective* objective);
+/// \brief Why planner \p name cannot plan for \p objective in state space \p space, or nullopt
+/// when it can:
+///  - OMPL's FMT* and BFMT* with the clearance objective (MaximizeMinClearanceObjective) end in a
+///    segmentation fault when the planner is freed, in 1.5.2 as planned or benchmarked here;
+///  - TRRT and BiTRRT take the objective's cost as a cost map to keep low along the tree, while
+///    the clearance objective's is a clearance to keep high: with it they solved no problem tried;
+///  - InformedRRT*, BIT* and CForest sample the path-length objective's informed set with OMPL's
+///    PathLengthDirectInfSampler, which throws in any space but real vectors, SE(2) and SE(3) (an
+///    arm's joint space, with its circular joints), and in CForest's threads the throw aborted
+///    the program.
+std::optional<std::string> plannerConflict(const std::string& name, const ompl::base::OptimizationObjective* objective,
+                                           const ompl::base::StateSpace& space);
 
 }  // namespace adsd::planner
