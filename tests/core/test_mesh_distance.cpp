@@ -594,6 +594,37 @@ TEST(MeshDistance, SeparatedPairTheGridCannotCullIsSplitAndStaysExact) {
 }
 
 }  // namespace
+// Meshes posed 1e15 and 1e20 times their size apart: the roundoff allowance of the numbers the
+// query works with (64 eps M, distance.h) is larger than the meshes, so any triangle pair is the
+// answer within the promised accuracy, and the query stops at the first. It went through every
+// pair instead, none of them provably farther than another (the CGAL cow and bunny 1e15 apart:
+// 21 million triangle pairs, 4 s; a 2-million-triangle terrain 1e16 from the cow did not end).
+TEST(MeshDistance, MeshesFarApartForTheirSizeAreAnsweredAtOnce) {
+  const Mesh ring = shapes::cShape(4.0, 0.4, 0.6, 30);
+  const Mesh ball = shapes::sphere(0.5, 12);
+  Mesh ringWithTree = ring, ballWithTree = ball;
+  ringWithTree.buildHierarchy();
+  ballWithTree.buildHierarchy();
+  for (const double apart : {1e15, 1e20}) {
+    const Pose poseA = Eigen::Translation3d(Vec3(0.3, -0.2, 1.0)) * Eigen::AngleAxisd(0.2, Vec3(1, 0, 0));
+    const Pose poseB = Eigen::Translation3d(Vec3(apart, 0.5 * apart, 0.0)) * Eigen::AngleAxisd(1.0, Vec3(0, 1, 0));
+    const oracle::MeshPairDistance truth = oracle::meshDistance(ring, poseA, ball, poseB);
+    const double accuracy = kPromisedAccuracy * oracle::sceneDiagonal(ring, poseA, ball, poseB);
+    // Without the stop, every one of these pairs was measured.
+    ASSERT_GT(ring.triangleCount() * ball.triangleCount(), 10000u);
+    for (const bool trees : {false, true}) {
+      SCOPED_TRACE(std::string(trees ? "trees, " : "from scratch, ") + std::to_string(apart));
+      for (const DistanceOptions& options : {DistanceOptions::exactDistance(), DistanceOptions::cappedAt(2 * apart)}) {
+        const DistanceResult r =
+            trees ? distance(ringWithTree, poseA, ballWithTree, poseB, options) : distance(ring, poseA, ball, poseB, options);
+        EXPECT_NEAR(r.distance, truth.value, accuracy);
+        EXPECT_EQ(r.status, DistanceStatus::exact);
+        EXPECT_LT(r.counters.trianglePairsTested, 100u);
+      }
+    }
+  }
+}
+
 /// Two parallel triangles s across, their corners s and 2 s along the axes: s / sqrt(3) apart.
 /// At s = 1e-55 the face test's sixth power of lengths underflowed to 0, and 0 >= 0 proved the
 /// nearer face farther than it is: the answer was s, 73 % too far (triangle_distance.cpp,
