@@ -3,22 +3,47 @@
 #include <algorithm>
 #include <limits>
 
+#include "adsd/planner/rigid_body_scene.h"
 #include "adsd/planner/state_pose.h"
+#include "adsd/tolerances.h"
 
 namespace adsd::planner {
 
 namespace ob = ompl::base;
 
+namespace {
+
+/// Ulps of the magnitudes involved given away per step: the query's roundoff allowance, twice
+/// (adsd/distance.h: its M adds both meshes' coordinates to the poses' offset), and four for the
+/// interpolated state's own rounding.
+constexpr double kRoundingUlps = 2.0 * tolerance::kBoundSafetyUlps + 4.0;
+
+}  // namespace
+
 CertifiedMotionValidator::CertifiedMotionValidator(const ob::SpaceInformationPtr& si,
                                                    std::shared_ptr<const RigidBodyValidityChecker> checker)
-    : ob::MotionValidator(si), checker_(std::move(checker)) {}
+    : ob::MotionValidator(si), checker_(std::move(checker)) {
+  // The largest coordinate of the environment and the robot: the farthest corner of the
+  // environment's box from the origin, and the robot's reach.
+  const Eigen::AlignedBox3d box = environmentBounds(checker_->scene());
+  if (!box.isEmpty()) sceneMagnitude_ = std::max(box.min().norm(), box.max().norm());
+  sceneMagnitude_ += checker_->robotRadius();
+}
 
 bool CertifiedMotionValidator::certify(const ob::State* s1, const ob::State* s2, double& lastValidT) const {
   lastValidT = 0.0;
   const RigidBodySpace space = checker_->space();
   const double margin = checker_->safetyMargin();
-  // Rounding allowance given away by every step (see kDistanceTrustFraction).
-  const double trust = kDistanceTrustFraction * checker_->scale();
+  // Rounding allowance given away by every step (see kDistanceTrustFraction), and what rounding
+  // costs far from the origin: an interpolated state lies off the straight motion by a few eps of
+  // the ends' magnitude, and a distance is trusted only to kBoundSafetyUlps eps of the magnitudes
+  // the query works with (adsd/distance.h). Both are negligible in a scene near its origin; a
+  // start 1e20 away made states near the walls land metres off the motion, and a motion through
+  // them was certified.
+  const double magnitude = poseFromState(s1, space).translation().norm() +
+                           poseFromState(s2, space).translation().norm() + sceneMagnitude_;
+  const double trust = kDistanceTrustFraction * checker_->scale() +
+                       kRoundingUlps * tolerance::kEpsilon * magnitude;
   // Bound on how far any robot point moves per unit of the motion parameter t.
   const double sweep =
       translationDistance(s1, s2, space) + rotationAngle(s1, s2, space) * checker_->robotRadius();

@@ -21,6 +21,7 @@
 #include <boost/program_options/parsers.hpp>
 
 #include "adsd/error.h"
+#include "adsd/tolerances.h"
 #include "decimal_number.h"
 #include "adsd/planner/planner_registry.h"
 
@@ -46,11 +47,12 @@ struct SectionHeader {
   int line = 0;
 };
 
-/// The largest |coordinate| of a start, a goal or a volume bound (length units). OMPL measures the
-/// space by its maximum extent, the root of the sum of the squared axis extents: with coordinates
-/// within +-1e150 an extent is at most 2e150 and three squares sum to ~1.2e301, far below the
-/// largest double (1.8e308), so the extent, and the segment length derived from it, stay finite.
-constexpr double kMaxCoordinateMagnitude = 1e150;
+/// The largest |coordinate| of a start, a goal or a volume bound (length units): the distance
+/// query's limit for a pose's translation (tolerance::kMaxCoordinate, 1e75), so that no state the
+/// planner draws within the volume is a pose the query refuses (with 1e150 allowed, `adsd plan`
+/// printed its solution and then stopped on the query's refusal). OMPL's maximum extent, the root
+/// of the sum of the squared axis extents, stays finite far beyond it.
+constexpr double kMaxCoordinateMagnitude = tolerance::kMaxCoordinate;
 
 /// OMPL's StateSpace::setLongestValidSegmentFraction throws unless the fraction f satisfies
 /// eps <= f <= 1 - eps with eps the machine epsilon of double (dimensionless).
@@ -178,7 +180,7 @@ double parseCoordinate(const Entry& e, const std::string& source) {
   const double x = parseNumber(e, source);
   if (std::fabs(x) > kMaxCoordinateMagnitude) {
     throw InputError(locate(source, e).describe() + ": " + quoted(e.value) +
-                     " is too large for a coordinate (at most 1e150 in magnitude)");
+                     " is too large for a coordinate (at most 1e75 in magnitude, the distance query's limit)");
   }
   return x;
 }

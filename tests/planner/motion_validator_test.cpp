@@ -97,6 +97,31 @@ TEST(CertifiedMotion, RejectsTheThinWallCrossingThatTheDiscreteCheckAccepts) {
 TEST(CertifiedMotion, RejectsTheThinWallCrossingWithFclToo) { thinWallCrossing<FclValidityChecker>("fcl"); }
 #endif
 
+// A motion from 1e20 away through the thin wall: the interpolated states near the wall lie metres
+// off the straight motion (a few eps of 1e20), and the query's distances there are trusted only to
+// its roundoff allowance of that magnitude. Both are given away: rejected. (It was certified, and
+// `adsd plan` printed a path through the office's walls.)
+TEST(CertifiedMotion, MotionFromFarAwayThroughTheWallIsRejected) {
+  SceneFixture f = test::thinWallFixture();
+  // A volume that reaches 1e20 out along x.
+  ob::RealVectorBounds bounds = f.si->getStateSpace()->as<ob::SE2StateSpace>()->getBounds();
+  bounds.setLow(0, -2e20);
+  f.si->getStateSpace()->as<ob::SE2StateSpace>()->setBounds(bounds);
+  auto checker = std::make_shared<MeshValidityChecker>(f.si, f.scene);
+  f.si->setStateValidityChecker(checker);
+  f.si->setup();
+  ob::ScopedState<ob::SE2StateSpace> start(f.si), goal(f.si), far(f.si);
+  thinWallEnds(f, start, goal);
+  for (const double x : {-1e20, -1e17, -1e12}) {
+    SCOPED_TRACE(x);
+    far->setXY(x, goal->getY());
+    far->setYaw(goal->getYaw());
+    ASSERT_TRUE(checker->isValid(far.get()));
+    CertifiedMotionValidator certified(f.si, checker);
+    EXPECT_FALSE(certified.checkMotion(far.get(), goal.get()));
+  }
+}
+
 /// Random motions between valid states: every accepted motion is free of collision at dense
 /// samples checked by the oracle; report how the two validators compare.
 void randomMotions(const SceneFixture& f, int motions, std::uint64_t seed) {

@@ -237,16 +237,19 @@ TEST(ProblemFileErrors, NumbersMustBeDecimal) {
   EXPECT_EQ(errorOf(comma), ":11: key 'problem.goal.x': expected a number, got '0,5'");
 }
 
-TEST(ProblemFileErrors, CoordinatesLargeEnoughToOverflowTheSpaceExtent) {
-  // OMPL's maximum extent squares the volume's extents: 1e200 would make it infinite.
+// Beyond 1e75 a state would be a pose the distance query refuses (and beyond 1e150 OMPL's maximum
+// extent, which squares the volume's extents, would be infinite).
+TEST(ProblemFileErrors, CoordinatesBeyondWhatTheQueryTakes) {
   std::string start = kSe3Start;
   start.replace(start.find("start.y = 2"), 11, "start.y = 1e200");
   EXPECT_EQ(errorOf(start),
-            ":5: key 'problem.start.y': '1e200' is too large for a coordinate (at most 1e150 in magnitude)");
+            ":5: key 'problem.start.y': '1e200' is too large for a coordinate (at most 1e75 in magnitude, the "
+            "distance query's limit)");
   EXPECT_EQ(errorOf(std::string(kSe3Start) +
-                    "volume.min.x = -1e151\nvolume.min.y = 0\nvolume.min.z = 0\nvolume.max.x = 1\n"
+                    "volume.min.x = -1e76\nvolume.min.y = 0\nvolume.min.z = 0\nvolume.max.x = 1\n"
                     "volume.max.y = 1\nvolume.max.z = 1\n"),
-            ":18: key 'problem.volume.min.x': '-1e151' is too large for a coordinate (at most 1e150 in magnitude)");
+            ":18: key 'problem.volume.min.x': '-1e76' is too large for a coordinate (at most 1e75 in magnitude, the "
+            "distance query's limit)");
 }
 
 TEST(ProblemFile, AnAxisOfExtremeMagnitudeIsStillARotation) {

@@ -68,6 +68,8 @@ class CertifiedMotionValidator : public ompl::base::MotionValidator {
   bool certify(const ompl::base::State* s1, const ompl::base::State* s2, double& lastValidT) const;
 
   std::shared_ptr<const RigidBodyValidityChecker> checker_;
+  /// The largest |coordinate| of the environment and the robot (rounding scales with it).
+  double sceneMagnitude_ = 0.0;
   mutable std::atomic<std::uint64_t> motions_{0};
   mutable std::atomic<std::uint64_t> rejected_{0};
   mutable std::atomic<std::uint64_t> clearanceSteps_{0};

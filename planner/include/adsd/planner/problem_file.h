@@ -107,7 +107,7 @@ struct ProblemFile {
 
 /// \brief Reads and checks a problem file. Throws adsd::InputError for a missing or unreadable
 /// file, a syntax error, a control character in a line (CR LF line ends are accepted), a missing
-/// or repeated key, a value of the wrong type or not finite, a coordinate beyond 1e150 in
+/// or repeated key, a value of the wrong type or not finite, a coordinate beyond 1e75 in
 /// magnitude, an inconsistent SE(2)/SE(3) key set, an inverted volume, a time limit beyond 1e8 s,
 /// a `control` key (kinodynamic problems are out of scope), or a repeated [problem] or [benchmark]
 /// section. Every value handed to OMPL as text (the space information's
