@@ -18,7 +18,10 @@ std::string readInputFile(const std::string& path, const std::string& what) {
   std::ostringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read the " + what);
-  return buffer.str();
+  // A UTF-8 byte-order mark, which Windows editors write, is no part of the text.
+  std::string text = buffer.str();
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  return text;
 }
 
 }  // namespace adsd::planner

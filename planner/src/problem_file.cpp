@@ -613,8 +613,10 @@ ObjectiveKind parseObjective(const std::string& value, const SourceLocation& whe
 ProblemFile parseProblemFile(std::istream& in, const std::string& sourceName, const std::string& directory) {
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::string text = buffer.str();
   if (in.bad()) throw InputError(sourceName + ": cannot read the file");
+  // A UTF-8 byte-order mark, which Windows editors write, is no part of the first line.
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   if (text.find('\0') != std::string::npos) throw InputError(sourceName + ": not a text file (contains a NUL byte)");
 
   std::vector<Entry> located;

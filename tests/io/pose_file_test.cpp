@@ -60,6 +60,12 @@ TEST(PoseFile, CommentsBlankLinesAndCrLfAreSkippedAndLinesCounted) {
   EXPECT_EQ(poses[1].b.translation(), Vec3(4, 5, 6));
 }
 
+TEST(PoseFile, Utf8ByteOrderMarkBeforeTheFirstLineIsSkipped) {
+  const std::vector<PosePair> poses = read("\xEF\xBB\xBF" + std::string(kIdentityPair) + "\n");
+  ASSERT_EQ(poses.size(), 1u);
+  EXPECT_EQ(poses[0].line, 1);
+}
+
 TEST(PoseFile, EmptyInputHasNoPoses) { EXPECT_TRUE(read("# nothing\n\n").empty()); }
 
 TEST(PoseFile, QuaternionWithinToleranceIsNormalized) {

@@ -78,6 +78,16 @@ std::string errorOf(const std::string& text) {
   return "";
 }
 
+// A UTF-8 byte-order mark (Windows editors write one) is no part of the first line: "[problem]"
+// after it was a malformed section header.
+TEST(ProblemFile, Utf8ByteOrderMarkBeforeTheFirstLineIsSkipped) {
+  ScratchDir dir;
+  const ProblemFile p = readProblemFile(dir.write("bom.cfg", "\xEF\xBB\xBF" + std::string(kSe3Start)));
+  EXPECT_EQ(p.space, RigidBodySpace::se3);
+  EXPECT_EQ(p.start.position, Vec3(1, 2, 3));
+  EXPECT_EQ(p.start.location.line, 4);
+}
+
 TEST(ProblemFile, ReadsAnSe2ProblemWithBenchmarkAndPlannerSections) {
   ScratchDir dir;
   const ProblemFile p = readProblemFile(dir.write("corridor.cfg", kSe2Problem));

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "adsd/error.h"
+#include "text_scan.h"
 
 namespace adsd::io::detail {
 
@@ -25,7 +26,8 @@ constexpr std::uintmax_t kStlBytesPerTriangle = 50;
 constexpr std::size_t kStlSniffBytes = 512;
 
 bool startsWithSolid(std::string_view head) {
-  std::size_t i = 0;
+  // After a UTF-8 byte-order mark, as the ASCII reader's lines are (text_scan.h).
+  std::size_t i = head.substr(0, kUtf8ByteOrderMark.size()) == kUtf8ByteOrderMark ? kUtf8ByteOrderMark.size() : 0;
   while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
   static const char kSolid[] = "solid";
   for (std::size_t k = 0; k < 5; ++k, ++i) {

@@ -50,6 +50,9 @@ std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceNa
   while (std::getline(in, line)) {
     ++lineNumber;
     std::string_view content(line);
+    if (lineNumber == 1 && content.substr(0, detail::kUtf8ByteOrderMark.size()) == detail::kUtf8ByteOrderMark) {
+      content.remove_prefix(detail::kUtf8ByteOrderMark.size());
+    }
     if (const std::size_t hash = content.find('#'); hash != std::string_view::npos) content = content.substr(0, hash);
     const std::vector<std::string_view> tokens = detail::splitWhitespace(content);
     if (tokens.empty()) continue;

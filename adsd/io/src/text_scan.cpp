@@ -49,6 +49,9 @@ bool parseWhole(std::string_view token, Number& value) {
 }  // namespace
 
 LineScanner::LineScanner(std::string_view text) : text_(text) {
+  // A UTF-8 byte-order mark, which Windows editors write at the start of text files, is not part
+  // of the first line: left in, it hid an OBJ's first vertex (an unknown statement, skipped).
+  if (text_.substr(0, kUtf8ByteOrderMark.size()) == kUtf8ByteOrderMark) offset_ = kUtf8ByteOrderMark.size();
   // Only a buffer without any '\n' is taken for CR-only text: a stray CR in LF or CR LF text stays
   // inside its line (where whitespace splitting drops it), as before.
   if (text_.find('\n') == std::string_view::npos && text_.find('\r') != std::string_view::npos) lineEnd_ = '\r';
