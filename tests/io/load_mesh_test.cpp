@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -176,6 +177,98 @@ TEST(LoadMesh, Off) {
                                        "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n"));
   EXPECT_EQ(mesh.triangleCount(), 4u);
   expectBounds(mesh, Vec3(0, 0, 0), Vec3(3, 3, 3));
+}
+
+/// The area of a mesh's triangles.
+double surfaceArea(const Mesh& mesh) {
+  double area = 0.0;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    area += 0.5 * (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0)).norm();
+  }
+  return area;
+}
+
+/// Whether point \p q, in the plane z = 0, lies in some triangle of \p mesh (all in that plane).
+bool covers(const Mesh& mesh, const Vec3& q) {
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const Vec3 a = mesh.corner(t, 0), b = mesh.corner(t, 1), c = mesh.corner(t, 2);
+    const double s = (b - a).cross(c - a).z();
+    const double u = (b - a).cross(q - a).z() / s, v = (q - a).cross(c - a).z() / s;
+    if (u >= 0 && v >= 0 && u + v <= 1) return true;
+  }
+  return false;
+}
+
+// A non-convex polygon (an L, a comb) is ear clipped, not fanned from its first corner: the fan of
+// the L from its inner corner (2, 1) covered the notch, and a point 0.1 above the notch was 0.1 from
+// the "surface" where it is 0.316 from the L. Its triangles cover the polygon once: their area is
+// the polygon's, and points outside it are outside them all.
+TEST(LoadMesh, NonConvexPolygonsAreEarClipped) {
+  TempDir dir;
+  const std::string lCorners = "2 1 0\n1 1 0\n1 2 0\n0 2 0\n0 0 0\n2 0 0\n";
+  std::string lObj;
+  for (std::size_t at = 0, line = 0; line < 6; ++line) {
+    const std::size_t end = lCorners.find('\n', at);
+    lObj += "v " + lCorners.substr(at, end - at) + "\n";
+    at = end + 1;
+  }
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"l.obj", lObj + "f 1 2 3 4 5 6\n"},
+      {"l.off", "OFF\n6 1 0\n" + lCorners + "6 0 1 2 3 4 5\n"},
+      {"l.ply", "ply\nformat ascii 1.0\nelement vertex 6\nproperty double x\nproperty double y\nproperty double z\n"
+                "element face 1\nproperty list uchar int vertex_indices\nend_header\n" + lCorners + "6 0 1 2 3 4 5\n"},
+  };
+  for (const auto& [name, text] : files) {
+    SCOPED_TRACE(name);
+    const Mesh mesh = loadMesh(dir.write(name, text));
+    EXPECT_EQ(mesh.triangleCount(), 4u);
+    EXPECT_NEAR(surfaceArea(mesh), 3.0, 1e-12);
+    EXPECT_FALSE(covers(mesh, Vec3(1.3, 1.3, 0)));  // the notch
+    EXPECT_TRUE(covers(mesh, Vec3(0.5, 1.5, 0)));
+    EXPECT_TRUE(covers(mesh, Vec3(1.5, 0.5, 0)));
+  }
+  // A comb of 200 teeth (801 corners, every other one turning back): area 200 x (1 x 0.5) + the spine.
+  std::string comb = "";
+  std::vector<std::pair<double, double>> outline = {{0, 0}};
+  for (int t = 0; t < 200; ++t) {
+    outline.push_back({t + 0.0, 1.0});
+    outline.push_back({t + 0.0, 3.0});
+    outline.push_back({t + 0.5, 3.0});
+    outline.push_back({t + 0.5, 1.0});
+  }
+  outline.push_back({200.0, 1.0});
+  outline.push_back({200.0, 0.0});
+  std::string face = "f";
+  for (std::size_t k = 0; k < outline.size(); ++k) {
+    comb += "v " + std::to_string(outline[outline.size() - 1 - k].first) + " " +
+            std::to_string(outline[outline.size() - 1 - k].second) + " 0\n";
+    face += " " + std::to_string(k + 1);
+  }
+  const Mesh teeth = loadMesh(dir.write("comb.obj", comb + face + "\n"));
+  EXPECT_EQ(teeth.triangleCount(), outline.size() - 2);
+  EXPECT_NEAR(surfaceArea(teeth), 200.0 * 1.0 + 200.0 * 2.0 * 0.5, 1e-9);
+  EXPECT_FALSE(covers(teeth, Vec3(10.75, 2.0, 0)));  // between two teeth
+  EXPECT_TRUE(covers(teeth, Vec3(10.25, 2.0, 0)));
+}
+
+// A polygon that crosses itself (a bow tie) has no ear to clip after the first: what is left is
+// fanned, and the file reads. A non-convex polygon of more corners than the clipper takes is
+// refused, naming the face, rather than fanned wrong.
+TEST(LoadMeshBadInput, SelfCrossingAndHugeNonConvexPolygons) {
+  TempDir dir;
+  const Mesh bowTie = loadMesh(dir.write("bowtie.obj", "v 0 0 0\nv 2 2 0\nv 2 0 0\nv 0 2 0\nv 1 3 0\nf 1 2 3 4 5\n"));
+  EXPECT_EQ(bowTie.triangleCount(), 3u);
+  std::string huge;
+  std::string face = "f";
+  const int corners = 10002;  // a star: every other corner on an inner circle
+  for (int k = 0; k < corners; ++k) {
+    const double angle = 2.0 * 3.14159265358979323846 * k / corners, radius = k % 2 ? 0.5 : 1.0;
+    huge += "v " + std::to_string(radius * std::cos(angle)) + " " + std::to_string(radius * std::sin(angle)) + " 0\n";
+    face += " " + std::to_string(k + 1);
+  }
+  const std::string error = loadError(dir.write("star.obj", huge + face + "\n"));
+  EXPECT_NE(error.find("star.obj: face 0 is a non-convex polygon of 10002 corners, more than the 10000"),
+            std::string::npos) << error;
 }
 
 // A UTF-8 byte-order mark (Windows editors write one) before a text format's first line: an OBJ

@@ -1,13 +1,15 @@
 #include "polygon_soup.h"
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstring>
-#include <algorithm>
 #include <unordered_map>
 #include <utility>
 
 #include "adsd/error.h"
 #include "adsd/tolerances.h"
+#include "polygon_triangulation.h"
 
 namespace adsd::io::detail {
 
@@ -137,18 +139,33 @@ Mesh meshFromSoup(PolygonSoup soup, const std::string& path) {
     }
     return index;
   };
+  std::vector<Vec3> polygon;  // a polygon's corners, and its triangles, for triangulatePolygon
+  std::vector<std::array<std::uint32_t, 3>> pieces;
   for (std::size_t p = 0; p < soup.polygonCount(); ++p) {
     const std::uint64_t begin = soup.starts[p], end = soup.starts[p + 1];
     const std::uint64_t n = end - begin;
     if (n == 1) ++points;
     if (n == 2) ++lines;
     if (n < 3) continue;
-    const std::uint32_t first = vertexFor(soup.corners[begin], p);
-    std::uint32_t previous = vertexFor(soup.corners[begin + 1], p);
-    for (std::uint64_t k = begin + 2; k < end; ++k) {
-      const std::uint32_t next = vertexFor(soup.corners[k], p);
-      triangles.push_back({first, previous, next});
-      previous = next;
+    if (n == 3) {
+      triangles.push_back({vertexFor(soup.corners[begin], p), vertexFor(soup.corners[begin + 1], p),
+                           vertexFor(soup.corners[begin + 2], p)});
+      continue;
+    }
+    polygon.clear();
+    for (std::uint64_t k = begin; k < end; ++k) {
+      if (soup.corners[k] >= soup.points.size()) vertexFor(soup.corners[k], p);  // throws, naming the face
+      polygon.push_back(soup.points[soup.corners[k]]);
+    }
+    pieces.clear();
+    if (triangulatePolygon(polygon, pieces) == PolygonKind::tooLarge) {
+      throw InputError(path + ": face " + std::to_string(p) + " is a non-convex polygon of " + std::to_string(n) +
+                       " corners, more than the " + std::to_string(kMaxClippedCorners) +
+                       " this reader triangulates: split it into triangles first");
+    }
+    for (const std::array<std::uint32_t, 3>& t : pieces) {
+      triangles.push_back({vertexFor(soup.corners[begin + t[0]], p), vertexFor(soup.corners[begin + t[1]], p),
+                           vertexFor(soup.corners[begin + t[2]], p)});
     }
   }
   if (triangles.empty()) {

@@ -28,7 +28,8 @@ struct PolygonSoup {
 void requireRepresentablePoints(const PolygonSoup& soup, const std::string& path);
 
 /// \brief The soup as a Mesh named \p path: polygons of three or more corners become triangles
-/// (fanned from their first corner: exact for the convex polygons exporters write), polygons of
+/// (triangulatePolygon: fanned from their first corner when convex, as exporters write them, ear
+/// clipped when not; a non-convex one of more than kMaxClippedCorners is refused), polygons of
 /// one or two corners (points, lines) are dropped, points used by no triangle are dropped, and
 /// points with bit-identical coordinates are shared, so that counts match what assimp made of the
 /// same files. Then dropRepeatedTriangles. No coordinate is changed. Throws InputError naming
