@@ -171,9 +171,15 @@ def summary(groups):
 
 
 def write_atomically(path, write):
+    """Writes through a temporary name renamed over `path`; a failure leaves neither."""
     temporary = path + ".tmp"
-    write(temporary)
-    os.replace(temporary, path)
+    try:
+        write(temporary)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.lexists(temporary) and not os.path.isdir(temporary):
+            os.remove(temporary)
+        raise
 
 
 def tick(g):

@@ -48,6 +48,18 @@ std::optional<std::string> Arguments::outputFile(const std::string& name) const 
   return file;
 }
 
+void requireDistinctFile(const std::string& option, const std::string& output,
+                         const std::vector<std::pair<std::string, std::string>>& others) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path mine = fs::absolute(output, ec).lexically_normal();
+  for (const auto& [what, file] : others) {
+    const bool same = fs::exists(output, ec) && fs::exists(file, ec) ? fs::equivalent(output, file, ec)
+                                                                       : mine == fs::absolute(file, ec).lexically_normal();
+    if (same) throw UsageError(option + ": '" + output + "' is " + what + " ('" + file + "'), not a file to write over");
+  }
+}
+
 std::vector<std::string> Arguments::texts(const std::string& name) const {
   if (!has(name)) return {};
   return map_[name].as<std::vector<std::string>>();

@@ -589,6 +589,7 @@ struct BenchmarkInput {
   unsigned runCount = kArmRunCount;  ///< without --runs or --run-range
   ot::Benchmark::Request request;    ///< maxTime, maxMem and simplify set; the rest benchmarkOne's
   std::optional<std::string> output;  ///< the file's output directory
+  std::optional<SourceLocation> outputLocation;  ///< the problem file's `output` line, if it named it
   /// A problem for one checker × motion validator.
   std::function<std::unique_ptr<BenchmarkedProblem>(const CheckingOptions&)> make;
 };
@@ -610,8 +611,8 @@ BenchmarkInput rigidInput(const BenchmarkArguments& a, const std::string& path) 
   auto file = std::make_shared<const ProblemFile>(readProblemFile(path));
   for (const std::string& w : file->warnings) std::cerr << "adsd benchmark: warning: " << w << '\n';
   if (file->benchmark.savePaths && *file->benchmark.savePaths != "none") {
-    std::cerr << "adsd benchmark: warning: " << file->path
-              << ": key 'benchmark.save_paths': saving paths is not supported, ignored\n";
+    std::cerr << "adsd benchmark: warning: " << file->benchmark.savePathsLocation.describe()
+              << ": saving paths is not supported, ignored\n";
   }
   const ot::Benchmark::Request defaults;
   BenchmarkInput in;
@@ -624,6 +625,7 @@ BenchmarkInput rigidInput(const BenchmarkArguments& a, const std::string& path) 
   in.request.maxMem = file->benchmark.memoryLimit.value_or(defaults.maxMem);
   in.request.simplify = file->benchmark.simplify.value_or(defaults.simplify);
   in.output = file->benchmark.output;
+  if (in.output) in.outputLocation = file->benchmark.outputLocation;
   in.make = [file](const CheckingOptions& options) {
     return std::make_unique<BenchmarkedProblemOf<PlanningProblem>>(*file, options);
   };
@@ -767,11 +769,20 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, cons
   std::error_code error;
   fs::create_directories(directory, error);
   if (error || !fs::is_directory(directory) || ::access(directory.c_str(), W_OK) != 0) {
-    throw InputError("--out: cannot write in directory '" + directory.string() + "'" +
-                     (error ? ": " + error.message() : std::string()));
+    // Named where it came from: --out, or the problem file's `output` line.
+    const std::string source = a.outDirectory || !input.outputLocation ? "--out" : input.outputLocation->describe();
+    throw InputError(source + ": cannot write in directory '" + directory.string() + "'" +
+                     (error ? ": " + error.message() : std::string(" (not a writable directory)")));
   }
   const fs::path logPath = directory / (stem + ".log");
   const fs::path databasePath = directory / (stem + ".db");
+  // Every file this writes is renamed over its name at the end: a directory there would fail it
+  // after the runs (the plots' names are the plotting script's, stem.*.png).
+  for (const fs::path& output : {logPath, databasePath, directory / (stem + ".summary.md")}) {
+    if (fs::is_directory(output, error)) {
+      throw InputError("--out: '" + output.string() + "' is a directory, where the benchmark writes a file");
+    }
+  }
 
   const std::size_t plannerCount = entries.size();
   std::printf("benchmark   %s (%s, %s): %zu planner(s) x %zu combination(s) x %u run(s)%s, %g s and %g MB per run\n",
@@ -839,7 +850,11 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, cons
     throw ToolFailure("'" + commandLine(convert) + "' failed");
   }
   fs::rename(temporaryDatabase, databasePath, error);
-  if (error) throw ToolFailure("cannot write '" + databasePath.string() + "': " + error.message());
+  if (error) {
+    std::error_code ignored;
+    fs::remove(temporaryDatabase, ignored);
+    throw ToolFailure("cannot write '" + databasePath.string() + "': " + error.message());
+  }
   std::printf("database    %s\n", databasePath.c_str());
   std::fflush(stdout);
 
@@ -867,7 +882,10 @@ int benchmark(const std::vector<std::string>& args) {
     tools.statistics = *found;
     if (::access(kPython, X_OK) != 0) throw ToolFailure(std::string(kPython) + " is missing (Debian package python3)");
     if (tools.plotter.empty() || !fs::is_regular_file(tools.plotter)) {
-      throw ToolFailure("the plotting script '" + tools.plotter + "' is missing (bench/planning/plot_benchmark.py)");
+      throw ToolFailure("the plotting script, which writes the summary too, is missing" +
+                        (tools.plotter.empty() ? std::string(" (no share/adsd/plot_benchmark.py in the prefix this program runs from)")
+                                               : " ('" + tools.plotter + "')") +
+                        "; --log-only writes the log without it");
     }
   }
 

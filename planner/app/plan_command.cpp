@@ -117,6 +117,12 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
   a.htmlFile = given->outputFile("html");
   // Last: finding the shipped problems may fail, and the options' errors come first.
   a.problem = problems.empty() ? defaultProblemFile() : problems.front();
+  if (a.pathFile) cli::requireDistinctFile("--path", *a.pathFile, {{"the problem file", a.problem}});
+  if (a.htmlFile) {
+    std::vector<std::pair<std::string, std::string>> others = {{"the problem file", a.problem}};
+    if (a.pathFile) others.emplace_back("the --path file", *a.pathFile);
+    cli::requireDistinctFile("--html", *a.htmlFile, others);
+  }
   return a;
 }
 
@@ -125,16 +131,18 @@ const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" :
 const char* name(ObjectiveKind k) { return k == ObjectiveKind::length ? "length" : "max_min_clearance"; }
 
 /// The planner named \p chosen for \p ss's objective, or an InputError listing the known names
-/// (or saying why this planner cannot take that objective).
-ompl::base::PlannerPtr makeNamedPlanner(const std::string& chosen, ompl::geometric::SimpleSetup& ss) {
+/// (or saying why this planner cannot take that objective), which begins with \p source: where
+/// the name came from ("--planner", or the problem file's line).
+ompl::base::PlannerPtr makeNamedPlanner(const std::string& chosen, ompl::geometric::SimpleSetup& ss,
+                                        const std::string& source = "--planner") {
   if (const auto conflict = plannerConflict(chosen, ss.getOptimizationObjective().get(), *ss.getStateSpace())) {
-    throw InputError("--planner: " + *conflict);
+    throw InputError(source + ": " + *conflict);
   }
   ompl::base::PlannerPtr planner = makePlanner(chosen, ss.getSpaceInformation());
   if (!planner) {
     std::string known;
     for (const std::string& n : knownPlannerNames()) known += (known.empty() ? "" : ", ") + n;
-    throw InputError("--planner: no planner named '" + chosen + "' (known: " + known + ")");
+    throw InputError(source + ": no planner named '" + chosen + "' (known: " + known + ")");
   }
   return planner;
 }
@@ -158,7 +166,8 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   } else {
     chosen = "rrtconnect";
   }
-  ompl::base::PlannerPtr planner = makeNamedPlanner(chosen, problem.setup());
+  ompl::base::PlannerPtr planner =
+      makeNamedPlanner(chosen, problem.setup(), a.planner || entry == nullptr ? "--planner" : entry->location.describe());
   if (entry != nullptr) {
     for (const Setting& s : entry->parameters) {
       if (!planner->params().hasParam(s.key)) {

@@ -86,6 +86,7 @@ std::optional<SrdfArguments> parseArguments(const std::vector<std::string>& args
   const std::optional<std::string> out = given->outputFile("out");
   if (!out) throw cli::UsageError("--out ROBOT.srdf is required");
   a.out = *out;
+  cli::requireDistinctFile("--out", a.out, {{"the URDF file", a.urdf}});
   a.states = given->whole("states", 1, kMaxStates).value_or(kDefaultStates);
   a.seed = given->whole("seed").value_or(1);
   a.never = given->has("never");

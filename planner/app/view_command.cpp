@@ -82,6 +82,9 @@ std::optional<ViewArguments> parseArguments(const std::vector<std::string>& args
   a.html = *html;
   // Last: finding the shipped problems may fail, and the options' errors come first.
   a.problem = problems.empty() ? defaultProblemFile() : problems.front();
+  std::vector<std::pair<std::string, std::string>> inputs = {{"the problem file", a.problem}};
+  if (a.pathFile) inputs.emplace_back("the --path file", *a.pathFile);
+  cli::requireDistinctFile("--html", a.html, inputs);
   return a;
 }
 

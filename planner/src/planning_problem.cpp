@@ -81,6 +81,12 @@ ob::ValidStateSamplerAllocator samplerAllocator(const Setting& s) {
                    "' (expected uniform, gaussian, obstacle_based, max_clearance or bridge_test)");
 }
 
+/// The position bounds of \p si's rigid-body space.
+const ob::RealVectorBounds& volumeBounds(const ob::SpaceInformation& si, RigidBodySpace space) {
+  return space == RigidBodySpace::se2 ? si.getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
+                                      : si.getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
+}
+
 std::string describeOr(const ProblemFile* file, bool start) {
   if (file == nullptr) return start ? "start" : "goal";
   return (start ? file->start : file->goal).location.describe();
@@ -185,7 +191,22 @@ void PlanningProblem::build(const Pose& start, const Pose& goal, const std::opti
   for (const bool isStart : {true, false}) {
     const ob::State* s = isStart ? startState.get() : goalState.get();
     const std::string which = isStart ? "the start state" : "the goal state";
-    if (!si->satisfiesBounds(s)) throw InputError(describeOr(file, isStart) + ": " + which + " is outside the bounds");
+    if (!si->satisfiesBounds(s)) {
+      // Name the coordinate outside, its line and the bounds it is outside of.
+      const Vec3 position = (isStart ? start : goal).translation();
+      const ob::RealVectorBounds& bounds = volumeBounds(*si, space);
+      std::string where = describeOr(file, isStart);
+      std::ostringstream why;
+      for (std::size_t axis = 0; axis < bounds.low.size(); ++axis) {
+        const double x = position[static_cast<Eigen::Index>(axis)];
+        if (bounds.low[axis] <= x && x <= bounds.high[axis]) continue;
+        if (file != nullptr) where = (isStart ? file->start : file->goal).positionLocations[axis].describe();
+        why << " (" << "xyz"[axis] << " = " << x << ", the bounds [" << bounds.low[axis] << ", " << bounds.high[axis]
+            << "])";
+        break;
+      }
+      throw InputError(where + ": " + which + " is outside the bounds" + why.str());
+    }
     if (!checker_->isValid(s)) {
       std::ostringstream why;
       why << describeOr(file, isStart) << ": " << which << " is in collision (clearance " << checker_->clearance(s)

@@ -391,10 +391,13 @@ ProblemPose readPose(const ProblemKeys& keys, const std::string& which, RigidBod
                      const std::string& source) {
   ProblemPose pose;
   pose.location = locate(source, keys.get(which + ".x"));
+  pose.positionLocations[0] = pose.location;
   pose.position.x() = keys.coordinate(which + ".x");
+  pose.positionLocations[1] = locate(source, keys.get(which + ".y"));
   pose.position.y() = keys.coordinate(which + ".y");
   pose.theta = keys.number(which + ".theta");
   if (space == RigidBodySpace::se3) {
+    pose.positionLocations[2] = locate(source, keys.get(which + ".z"));
     pose.position.z() = keys.coordinate(which + ".z");
     pose.axis = Vec3(keys.number(which + ".axis.x"), keys.number(which + ".axis.y"), keys.number(which + ".axis.z"));
     if (pose.axis.cwiseAbs().maxCoeff() == 0.0 && pose.theta != 0.0) {
@@ -528,6 +531,7 @@ void readBenchmarkSection(const std::vector<Entry>& entries, const std::string& 
       b.runCount = parsePositiveInt(e, source);
     } else if (key == "output") {
       b.output = resolvePath(e.value, file.directory);
+      b.outputLocation = locate(source, e);
     } else if (key == "simplify") {
       b.simplify = parseFlag(e, source);
     } else if (key == "save_paths") {
@@ -535,6 +539,7 @@ void readBenchmarkSection(const std::vector<Entry>& entries, const std::string& 
         throw InputError(locate(source, e).describe() + ": expected all, shortest or none, got '" + e.value + "'");
       }
       b.savePaths = e.value;
+      b.savePathsLocation = locate(source, e);
     } else {
       file.warnings.push_back(locate(source, e).describe() + ": unknown benchmark key, ignored");
     }

@@ -59,6 +59,19 @@ def main():
             expect_refused(adsd, [command, office, option, "/dev/null"] + extra, work,
                            f"adsd {command}: error: {option}: '/dev/null' is a device, a pipe or a socket")
 
+        # An output that is an input, or the other output, is refused: `view p.cfg --html p.cfg`
+        # replaced the problem file with a page.
+        before = pathlib.Path(office).read_bytes()
+        expect_refused(adsd, ["view", office, "--html", office], work,
+                       f"adsd view: error: --html: '{office}' is the problem file")
+        expect_refused(adsd, ["plan", office, "--path", office], work,
+                       f"adsd plan: error: --path: '{office}' is the problem file")
+        both = os.path.join(work, "both.out")
+        expect_refused(adsd, ["plan", office, "--path", both, "--html", both], work,
+                       f"adsd plan: error: --html: '{both}' is the --path file")
+        check(pathlib.Path(office).read_bytes() == before, "the problem file was changed")
+        check(not os.path.exists(both), "a refused plan wrote " + both)
+
         # OMPL's FMT* and BFMT* crashed (a segmentation fault) with the clearance objective; TRRT
         # and BiTRRT timed out with it on every problem (they keep the objective's cost low).
         for planner in ("fmt", "bfmt", "trrt", "bitrrt"):

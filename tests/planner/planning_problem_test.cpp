@@ -92,7 +92,8 @@ TEST(PlanningProblem, StartInCollisionOrOutsideTheBounds) {
   const std::string outside = writeThinWall(
       dir, "volume.min.x = -4\nvolume.min.y = -4\nvolume.max.x = 4\nvolume.max.y = 4\n",
       "start.x = -5\nstart.y = -1\nstart.theta = 0\n");
-  EXPECT_EQ(errorOf(readProblemFile(outside)), outside + ":4: key 'problem.start.x': the start state is outside the bounds");
+  EXPECT_EQ(errorOf(readProblemFile(outside)),
+            outside + ":4: key 'problem.start.x': the start state is outside the bounds (x = -5, the bounds [-4, 4])");
 }
 
 TEST(PlanningProblem, SpaceParametersAreAppliedOrReported) {

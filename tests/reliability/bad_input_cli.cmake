@@ -122,7 +122,7 @@ expect_bad_input(NEEDLES "wrong_type.cfg:4: key 'problem.start.x'" "expected a n
 write_cfg(no_robot.cfg "[problem]\nrobot = nowhere.obj\nworld = world.obj\n${good_start}${good_goal}${volume}")
 expect_bad_input(NEEDLES "no_robot.cfg:2: key 'problem.robot'" "nowhere.obj" "does not exist" ARGS plan no_robot.cfg --path out.path)
 write_cfg(start_out.cfg "[problem]\nrobot = robot.obj\nworld = world.obj\nstart.x = 0\nstart.y = -3\nstart.theta = 0\n${good_goal}${volume}")
-expect_bad_input(NEEDLES "start_out.cfg:4: key 'problem.start.x'" "outside the bounds" ARGS plan start_out.cfg --path out.path)
+expect_bad_input(NEEDLES "start_out.cfg:5: key 'problem.start.y'" "outside the bounds (y = -3, the bounds [-2, 2])" ARGS plan start_out.cfg --path out.path)
 write_cfg(start_hit.cfg "[problem]\nrobot = robot.obj\nworld = world.obj\nstart.x = 0.55\nstart.y = 0\nstart.theta = 0\n${good_goal}${volume}")
 expect_bad_input(NEEDLES "start_hit.cfg:4: key 'problem.start.x'" "in collision" ARGS plan start_hit.cfg --path out.path)
 write_cfg(goal_out.cfg "[problem]\nrobot = robot.obj\nworld = world.obj\n${good_start}goal.x = 2.5\ngoal.y = 0\ngoal.theta = 0\n${volume}")

@@ -33,6 +33,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <boost/program_options.hpp>
@@ -76,6 +77,13 @@ class Arguments {
  private:
   po::variables_map map_;
 };
+
+/// \brief Throws UsageError when file \p output, which option \p option names, is one of \p others
+/// (the same file by another name too): a command's output must replace neither its input nor
+/// another of its outputs (`adsd view p.cfg --html p.cfg` replaced the problem file with a page).
+/// \p others holds (what, file) pairs, `what` naming the other in the message.
+void requireDistinctFile(const std::string& option, const std::string& output,
+                         const std::vector<std::pair<std::string, std::string>>& others);
 
 /// \brief A program's (or subcommand's) options, its help, and the parsing of its arguments.
 class CommandLine {

@@ -38,6 +38,8 @@ struct ProblemPose {
   double theta = 0.0;            ///< radians: yaw for SE(2), rotation angle about axis for SE(3)
   Vec3 axis = Vec3::UnitZ();     ///< SE(3) only; need not be normalized
   SourceLocation location;       ///< the `start.x` / `goal.x` line
+  /// The `.x`, `.y` and `.z` lines (z: SE(3) only), for a message about one coordinate.
+  std::array<SourceLocation, 3> positionLocations;
 
   /// \brief The pose this describes: translation then rotation (axis-angle about the normalized
   /// axis; about z for SE(2)).
@@ -75,8 +77,10 @@ struct BenchmarkSection {
   std::optional<double> memoryLimit;  ///< MB per run
   std::optional<int> runCount;
   std::optional<std::string> output;  ///< resolved against the cfg's directory
+  SourceLocation outputLocation;      ///< the `output` line, when given
   std::optional<bool> simplify;
   std::optional<std::string> savePaths;  ///< "all" or "shortest"
+  SourceLocation savePathsLocation;      ///< the `save_paths` line, when given
 };
 
 /// \brief Everything a `.cfg` says.
