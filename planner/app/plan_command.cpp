@@ -87,7 +87,8 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
        "repeated and compared on the same random draws")
       ("no-simplify",
        "report and write the planner's path as found (comparisons of planning time need not wait for the "
-       "simplifier, which may use the whole time limit again; a path planned for clearance is never simplified)")
+       "simplifier, which is given the time limit again and may run past it to finish the step under way; a path "
+       "planned for clearance is never simplified)")
       ("path", cli::value("OUT.path"), "write the path to OUT.path")
       ("html", cli::value("OUT.html"), "write the browser viewer of the problem and its path (one page, opens offline)");
   line.positional("problem");
