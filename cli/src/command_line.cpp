@@ -54,9 +54,12 @@ void requireDistinctFile(const std::string& option, const std::string& output,
   std::error_code ec;
   const fs::path mine = fs::absolute(output, ec).lexically_normal();
   for (const auto& [what, file] : others) {
-    const bool same = fs::exists(output, ec) && fs::exists(file, ec) ? fs::equivalent(output, file, ec)
-                                                                       : mine == fs::absolute(file, ec).lexically_normal();
-    if (same) throw UsageError(option + ": '" + output + "' is " + what + " ('" + file + "'), not a file to write over");
+    const bool same = fs::exists(output, ec) && fs::exists(file, ec)
+                          ? fs::equivalent(output, file, ec)
+                          : mine == fs::absolute(file, ec).lexically_normal();
+    if (same) {
+      throw UsageError(option + ": '" + output + "' is " + what + " ('" + file + "'), not a file to write over");
+    }
   }
 }
 

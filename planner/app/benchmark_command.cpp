@@ -883,8 +883,9 @@ int benchmark(const std::vector<std::string>& args) {
     if (::access(kPython, X_OK) != 0) throw ToolFailure(std::string(kPython) + " is missing (Debian package python3)");
     if (tools.plotter.empty() || !fs::is_regular_file(tools.plotter)) {
       throw ToolFailure("the plotting script, which writes the summary too, is missing" +
-                        (tools.plotter.empty() ? std::string(" (no share/adsd/plot_benchmark.py in the prefix this program runs from)")
-                                               : " ('" + tools.plotter + "')") +
+                        (tools.plotter.empty()
+                             ? std::string(" (no share/adsd/plot_benchmark.py in the prefix this program runs from)")
+                             : " ('" + tools.plotter + "')") +
                         "; --log-only writes the log without it");
     }
   }

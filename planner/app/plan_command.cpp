@@ -167,8 +167,8 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   } else {
     chosen = "rrtconnect";
   }
-  ompl::base::PlannerPtr planner =
-      makeNamedPlanner(chosen, problem.setup(), a.planner || entry == nullptr ? "--planner" : entry->location.describe());
+  const std::string source = a.planner || entry == nullptr ? "--planner" : entry->location.describe();
+  ompl::base::PlannerPtr planner = makeNamedPlanner(chosen, problem.setup(), source);
   if (entry != nullptr) {
     for (const Setting& s : entry->parameters) {
       if (!planner->params().hasParam(s.key)) {

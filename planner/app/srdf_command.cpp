@@ -135,8 +135,8 @@ int run(const SrdfArguments& a) {
     }
   }
   const std::size_t left = pairs.enabledPairs().size();
-  std::cout << "pairs       " << adjacent + atDefault + found.pairsTested << " between links with geometry: " << adjacent
-            << " adjacent, " << atDefault << " in contact in the default pose"
+  std::cout << "pairs       " << adjacent + atDefault + found.pairsTested << " between links with geometry: "
+            << adjacent << " adjacent, " << atDefault << " in contact in the default pose"
             << (a.defaultPose ? "" : " (--no-default: not looked for)") << ", " << found.alwaysInContact
             << " in contact in all " << found.states << " states, "
             << found.neverInContact << " in none"

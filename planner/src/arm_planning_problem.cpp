@@ -138,7 +138,9 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
       int line = 0;
       for (const auto& [given, position] : request.start) {
         bool movable = false;
-        for (std::size_t k = 0; k < dof && !movable; ++k) movable = model_->joints[model_->activeJoints[k]].name == given;
+        for (std::size_t k = 0; k < dof && !movable; ++k) {
+          movable = model_->joints[model_->activeJoints[k]].name == given;
+        }
         bool exists = movable;
         for (const ArmJoint& j : model_->joints) exists = exists || j.name == given;
         if (exists) continue;
@@ -148,7 +150,8 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
       throw InputError(at(file.requestPath, line) + ": the start state has no position for joint '" + joint +
                        "' of robot '" + model_->name + "' (neither the request's start_state nor the scene's " +
                        "robot_state gives one" +
-                       (unknown.empty() ? std::string(")") : "; the start_state names " + unknown + ", which the robot lacks)"));
+                       (unknown.empty() ? std::string(")")
+                                        : "; the start_state names " + unknown + ", which the robot lacks)"));
     }
   }
   // A mimic joint follows its leader, as in MoveIt, and a locked joint (equal limits) stands at its

@@ -205,6 +205,28 @@ TEST(ArmCollisionPairs, SamplingPassOnTheKr5KeepsPairsThatSometimesTouch) {
 }
 
 // Each failure mode of readUrdf: one InputError whose message names the file and what is wrong.
+/// A URDF file and what its InputError must say.
+struct BadUrdf {
+  std::string file, text, mustSay;
+};
+
+/// Writes each case into \p dir and expects readUrdf to refuse it in one line naming the file and
+/// saying the case's words.
+void expectRefused(test::ScratchDir& dir, const std::vector<BadUrdf>& cases) {
+  for (const BadUrdf& c : cases) {
+    const std::string path = dir.write(c.file, c.text);
+    try {
+      readUrdf(path);
+      ADD_FAILURE() << c.file << ": no error";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(c.file), std::string::npos) << c.file << ": " << what;
+      EXPECT_NE(what.find(c.mustSay), std::string::npos) << c.file << ": " << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << c.file << ": one line: " << what;
+    }
+  }
+}
+
 TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
   test::ScratchDir dir;
   dir.write("garbage.stl", "solid x\nthis is not an STL file\n");
@@ -215,10 +237,7 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
     return "<joint name=\"" + name + "\" type=\"" + type + "\"><parent link=\"" + parent + "\"/><child link=\"" +
            child + "\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>";
   };
-  struct Case {
-    std::string file, text, mustSay;
-  };
-  const std::vector<Case> cases = {
+  const std::vector<BadUrdf> cases = {
       {"not_xml.urdf", "<robot name=\"r\"><link name=\"a\">", "not XML"},
       {"no_robot.urdf", "<model/>", "no <robot>"},
       {"missing_mesh.urdf", robot(R"(<link name="a"><collision><geometry><mesh filename="absent.stl"/></geometry></collision></link>)"), "absent.stl"},
@@ -236,18 +255,7 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
       {"undefined_link.urdf", robot(link + joint("j", "revolute", "a", "zz")), "'zz'"},
       {"bad_limits.urdf", robot(link + "<link name=\"b\"/>" + "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/><limit lower=\"1\" upper=\"-1\" effort=\"1\" velocity=\"1\"/></joint>"), "joint 'j'"},
   };
-  for (const Case& c : cases) {
-    const std::string path = dir.write(c.file, c.text);
-    try {
-      readUrdf(path);
-      ADD_FAILURE() << c.file << ": no error";
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find(c.file), std::string::npos) << c.file << ": " << what;
-      EXPECT_NE(what.find(c.mustSay), std::string::npos) << c.file << ": " << what;
-      EXPECT_EQ(what.find('\n'), std::string::npos) << c.file << ": one line: " << what;
-    }
-  }
+  expectRefused(dir, cases);
   EXPECT_THROW(readUrdf(dir.path("absent.urdf")), InputError);
 }
 
@@ -258,7 +266,8 @@ const char* kGripper = R"(<robot name="gripper">
   <link name="palm"><collision><geometry><box size="0.1 0.1 0.02"/></geometry></collision></link>
   <link name="left"><collision><geometry><box size="0.01 0.01 0.05"/></geometry></collision></link>
   <link name="right"><collision><geometry><box size="0.01 0.01 0.05"/></geometry></collision></link>
-  <link name="thumb"><collision><origin xyz="0.05 0 0"/><geometry><box size="0.1 0.01 0.01"/></geometry></collision></link>
+  <link name="thumb"><collision><origin xyz="0.05 0 0"/><geometry><box size="0.1 0.01 0.01"/></geometry>
+    </collision></link>
   <joint name="left_finger" type="prismatic"><parent link="palm"/><child link="left"/>
     <origin xyz="0.02 0 0.04"/><axis xyz="1 0 0"/><limit lower="0" upper="0.03" effort="1" velocity="1"/></joint>
   <joint name="right_finger" type="prismatic"><parent link="palm"/><child link="right"/>
@@ -314,36 +323,25 @@ TEST(ArmModel, MimicJointsThatCannotFollowAreRefusedNamingTheJoint) {
            "\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>" + mimic +
            "</joint>";
   };
-  struct Case {
-    std::string file, text, mustSay;
-  };
-  const std::vector<Case> cases = {
-      {"no_leader.urdf", palm + joint("j1", "revolute", "b", "<mimic joint=\"zz\"/>") + joint("j2", "revolute", "c", ""),
+  const auto robot = [](const std::string& body) { return "<robot name=\"r\">" + body + "</robot>"; };
+  expectRefused(dir, {
+      {"no_leader.urdf",
+       robot(palm + joint("j1", "revolute", "b", "<mimic joint=\"zz\"/>") + joint("j2", "revolute", "c", "")),
        "joint 'j1': <mimic joint='zz'> of joint 'j1' names no movable joint"},
-      {"mimic_cycle.urdf", palm + joint("j1", "revolute", "b", "<mimic joint=\"j2\"/>") +
-                               joint("j2", "revolute", "c", "<mimic joint=\"j1\"/>"), "comes back to itself"},
-      {"wrapping.urdf", palm + joint("j1", "continuous", "b", "") +
-                            joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"0.5\"/>"),
+      {"mimic_cycle.urdf", robot(palm + joint("j1", "revolute", "b", "<mimic joint=\"j2\"/>") +
+                                 joint("j2", "revolute", "c", "<mimic joint=\"j1\"/>")),
+       "comes back to itself"},
+      {"wrapping.urdf", robot(palm + joint("j1", "continuous", "b", "") +
+                              joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"0.5\"/>")),
        "joint 'j2': follows continuous joint 'j1' with multiplier 0.5"},
-      {"huge_multiplier.urdf", palm + joint("j1", "revolute", "b", "") +
-                                   joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"1e300\"/>"),
+      {"huge_multiplier.urdf", robot(palm + joint("j1", "revolute", "b", "") +
+                                     joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"1e300\"/>")),
        "multiplier and offset must be finite"},
-  };
-  for (const Case& c : cases) {
-    const std::string path = dir.write(c.file, "<robot name=\"r\">" + c.text + "</robot>");
-    try {
-      readUrdf(path);
-      ADD_FAILURE() << c.file << ": no error";
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find(c.file), std::string::npos) << c.file << ": " << what;
-      EXPECT_NE(what.find(c.mustSay), std::string::npos) << c.file << ": " << what;
-    }
-  }
+  });
   // A whole multiple of a continuous joint's angle turns by whole turns where it wraps: accepted.
-  EXPECT_NO_THROW(readUrdf(dir.write("whole.urdf", "<robot name=\"r\">" + palm + joint("j1", "continuous", "b", "") +
-                                                       joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"-2\"/>") +
-                                                       "</robot>")));
+  EXPECT_NO_THROW(readUrdf(dir.write("whole.urdf", robot(palm + joint("j1", "continuous", "b", "") +
+                                                             joint("j2", "revolute", "c",
+                                                                   "<mimic joint=\"j1\" multiplier=\"-2\"/>")))));
 }
 
 // urdfdom logs and drops a <collision> element it cannot read, and reads on: the link went

@@ -44,7 +44,8 @@ const char* kRobot = R"(<?xml version="1.0"?>
   <link name="rider"><collision><origin xyz="0 0 -0.3"/><geometry><sphere radius="0.05"/></geometry></collision></link>
   <link name="inner"><collision><origin xyz="0 0 0.1"/><geometry><sphere radius="0.05"/></geometry></collision></link>
   <link name="sleeve"><collision><origin xyz="0 0.8 0"/><geometry><box size="3 0.1 0.1"/></geometry></collision></link>
-  <link name="flag"><collision><origin xyz="-0.4 0 0.35"/><geometry><box size="0.8 0.05 0.05"/></geometry></collision></link>
+  <link name="flag"><collision><origin xyz="-0.4 0 0.35"/><geometry><box size="0.8 0.05 0.05"/></geometry>
+    </collision></link>
   <joint name="slide" type="prismatic"><parent link="base"/><child link="slider"/><origin xyz="0 0 0.5"/>
     <axis xyz="1 0 0"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
   <joint name="tilt" type="revolute"><parent link="slider"/><child link="rider"/>
@@ -114,7 +115,8 @@ TEST(SrdfCommand, WritesTheAdjacentAndDefaultPairs) {
 TEST(SrdfCommand, NeverAndNoDefaultChangeWhatIsDisabled) {
   const fs::path dir = workDirectory();
   const fs::path urdf = writeRobot(dir);
-  PlanRun r = runAdsd("srdf", {urdf.string(), "--out", (dir / "never.srdf").string(), "--states", "2000", "--never"}, dir);
+  PlanRun r =
+      runAdsd("srdf", {urdf.string(), "--out", (dir / "never.srdf").string(), "--states", "2000", "--never"}, dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(disabledPairs(dir / "never.srdf"),
             joined(joined(kAdjacent, kNever), {{"flag", "slider", "Default"}, {"inner", "slider", "Default"}}));
@@ -143,7 +145,8 @@ TEST(SrdfCommand, ArmProblemStartingInTheDefaultPoseIsSolvedWithTheWrittenSrdf) 
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("the start state is in collision"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("links 'slider' and 'flag'"), std::string::npos) << r.err;
-  r = runAdsd("srdf", {(dir / "judged.urdf").string(), "--out", (dir / "judged.srdf").string(), "--states", "500"}, dir);
+  r = runAdsd("srdf", {(dir / "judged.urdf").string(), "--out", (dir / "judged.srdf").string(), "--states", "500"},
+              dir);
   ASSERT_EQ(r.status, 0) << r.err;
   r = runAdsd("plan", {(dir / "with.cfg").string(), "--time", "2"}, dir);
   EXPECT_EQ(r.status, 0) << r.err;

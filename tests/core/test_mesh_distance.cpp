@@ -615,8 +615,8 @@ TEST(MeshDistance, MeshesFarApartForTheirSizeAreAnsweredAtOnce) {
     for (const bool trees : {false, true}) {
       SCOPED_TRACE(std::string(trees ? "trees, " : "from scratch, ") + std::to_string(apart));
       for (const DistanceOptions& options : {DistanceOptions::exactDistance(), DistanceOptions::cappedAt(2 * apart)}) {
-        const DistanceResult r =
-            trees ? distance(ringWithTree, poseA, ballWithTree, poseB, options) : distance(ring, poseA, ball, poseB, options);
+        const DistanceResult r = trees ? distance(ringWithTree, poseA, ballWithTree, poseB, options)
+                                       : distance(ring, poseA, ball, poseB, options);
         EXPECT_NEAR(r.distance, truth.value, accuracy);
         EXPECT_EQ(r.status, DistanceStatus::exact);
         EXPECT_LT(r.counters.trianglePairsTested, 100u);

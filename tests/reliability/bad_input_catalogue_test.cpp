@@ -95,7 +95,8 @@ TEST(BadInputCatalogue, GoalOutsideTheBounds) {
   Scratch dir;
   writeMeshes(dir);
   const std::string cfg = dir.write("t.cfg", problemText("robot.obj", "goal.x = 2.5\ngoal.y = 0\ngoal.theta = 0\n"));
-  EXPECT_EQ(problemError(cfg), ":7: key 'problem.goal.x': the goal state is outside the bounds (x = 2.5, the bounds [-2, 2])");
+  EXPECT_EQ(problemError(cfg),
+            ":7: key 'problem.goal.x': the goal state is outside the bounds (x = 2.5, the bounds [-2, 2])");
 }
 
 TEST(BadInputCatalogue, GoalInCollision) {

@@ -13,9 +13,10 @@ namespace adsd::io::detail {
 /// \brief The UTF-8 byte-order mark, which some editors put at the start of a text file.
 inline constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
 
-/// \brief Walks a buffer line by line (after a UTF-8 byte-order mark at its start, if any) ('\n' ends a line; a '\r' before it is dropped; in a buffer
-/// with no '\n' at all, '\r' ends a line, as in classic Mac OS text), counting lines from 1 and
-/// remembering where the next line starts (binary PLY data follows its header).
+/// \brief Walks a buffer line by line, after a UTF-8 byte-order mark at its start if any ('\n' ends
+/// a line; a '\r' before it is dropped; in a buffer with no '\n' at all, '\r' ends a line, as in
+/// classic Mac OS text), counting lines from 1 and remembering where the next line starts (binary
+/// PLY data follows its header).
 class LineScanner {
  public:
   explicit LineScanner(std::string_view text);
