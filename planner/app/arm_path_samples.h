@@ -27,13 +27,24 @@ inline double armClearanceStep(const ompl::geometric::PathGeometric& path) {
   return std::max(kArmClearanceStep, path.length() / (kMaxArmClearanceStates - 1));
 }
 
-/// \brief A copy of \p path interpolated to states at most armClearanceStep() apart. What
-/// adsd::planner::measurePath() measures on it is then the clearance at these states (its own
-/// interpolation to the validity-checking resolution adds none).
+/// \brief A copy of \p path interpolated to states at most armClearanceStep() apart, and then at
+/// most the space's validity-checking resolution apart (finer on a joint space of small ranges,
+/// a gripper's). adsd::planner::measurePath() measures the clearance at exactly these states (its
+/// own interpolation to that resolution adds none), and so does measureArmPathClearance().
 inline ompl::geometric::PathGeometric armClearanceSamples(const ompl::geometric::PathGeometric& path) {
   ompl::geometric::PathGeometric dense(path);
   dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / armClearanceStep(path))) + 1);
+  dense.interpolate();
   return dense;
+}
+
+/// \brief The largest distance between consecutive states of \p samples.
+inline double largestStep(const ompl::geometric::PathGeometric& samples) {
+  double largest = 0.0;
+  for (std::size_t i = 0; i + 1 < samples.getStateCount(); ++i) {
+    largest = std::max(largest, samples.getSpaceInformation()->distance(samples.getState(i), samples.getState(i + 1)));
+  }
+  return largest;
 }
 
 }  // namespace adsd::app

@@ -561,12 +561,14 @@ bool setQuietly(ob::Planner& planner, const Setting& s) {
 /// A planner of \p entry on \p si with the entry's parameters; warnings only when \p warn (they are
 /// the same for every combination).
 ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, ompl::geometric::SimpleSetup& ss, bool warn) {
+  // Where the name came from: the problem file's [planner] line, or --planner.
+  const std::string source = entry.location.file.empty() ? "--planner" : entry.location.describe();
   if (const auto conflict = plannerConflict(entry.name, ss.getOptimizationObjective().get(), *ss.getStateSpace())) {
-    throw InputError(entry.location.describe() + ": " + *conflict);
+    throw InputError(source + ": " + *conflict);
   }
   const ob::SpaceInformationPtr& si = ss.getSpaceInformation();
   ob::PlannerPtr planner = makePlanner(entry.name, si);
-  if (!planner) throw InputError(entry.location.describe() + ": no planner named '" + entry.name + "'");
+  if (!planner) throw InputError(source + ": no planner named '" + entry.name + "'");
   for (const Setting& s : entry.parameters) {
     if (!planner->params().hasParam(s.key)) {
       if (warn) {
@@ -903,8 +905,9 @@ int benchmark(const std::vector<std::string>& args) {
       const auto [directory, stem] = outputNames(a, input);
       const auto [it, added] = byOutput.emplace(fs::absolute(directory / stem).lexically_normal(), &input);
       if (!added) {
-        throw InputError(input.path + ": its results would overwrite those of " + it->second->path + " (both named '" +
-                         input.name + "': give each problem its own `name =` in [problem])");
+        throw InputError(input.path + ": its results would overwrite those of " + it->second->path + " (named '" +
+                         input.name + "' and '" + it->second->name + "', both written as '" + stem +
+                         "': give each problem its own `name =` in [problem])");
       }
     }
     for (const BenchmarkInput& input : inputs) buildCombinations(a, input, false);

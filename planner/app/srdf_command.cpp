@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -64,6 +65,21 @@ struct SrdfArguments {
   bool defaultPose = true;
 };
 
+/// An existing --out file is replaced only when it is an SRDF already (its text holds a <robot>
+/// element): the name of a mesh the robot reads, given by mistake, was overwritten with XML.
+void requireReplaceable(const std::string& out) {
+  std::error_code ec;
+  if (!std::filesystem::exists(out, ec)) return;
+  std::ifstream in(out, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.find("<robot") == std::string::npos) {
+    throw cli::UsageError("--out: '" + out + "' exists and is not an SRDF (no <robot> element near its start): not " +
+                          "replaced");
+  }
+}
+
 /// Returns nullopt after printing the help.
 std::optional<SrdfArguments> parseArguments(const std::vector<std::string>& args) {
   cli::CommandLine line("adsd srdf", kSynopsis, kDescription, kDetails);
@@ -87,6 +103,7 @@ std::optional<SrdfArguments> parseArguments(const std::vector<std::string>& args
   if (!out) throw cli::UsageError("--out ROBOT.srdf is required");
   a.out = *out;
   cli::requireDistinctFile("--out", a.out, {{"the URDF file", a.urdf}});
+  requireReplaceable(a.out);
   a.states = given->whole("states", 1, kMaxStates).value_or(kDefaultStates);
   a.seed = given->whole("seed").value_or(1);
   a.never = given->has("never");
@@ -126,6 +143,10 @@ int run(const SrdfArguments& a) {
 
   std::size_t withGeometry = 0;
   for (const ArmLink& link : model.links) withGeometry += link.collision ? 1 : 0;
+  if (withGeometry < 2) {
+    std::cerr << "adsd srdf: warning: " << a.urdf << ": " << withGeometry
+              << " link(s) with <collision> geometry: no pair of links to check or leave unchecked\n";
+  }
   std::cout << model.name << ": " << model.links.size() << " links, " << withGeometry
             << " with collision geometry, " << model.dof() << " joints to sample\n";
   for (const ArmCollisionPairs::Disabled& d : pairs.disabled()) {

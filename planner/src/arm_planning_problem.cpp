@@ -117,6 +117,21 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
                         "' has no <collision> geometry on any link (its <visual> geometry is not checked, as in "
                         "MoveIt): no state is in collision");
   }
+  // A mimic joint follows its leader past its own limits, as in MoveIt (which checks the limits of
+  // the joints it plans for only): said, since the robot's description then disagrees with itself.
+  for (const ArmJoint& j : model_->joints) {
+    if (j.mimicCoordinate < 0 || j.type == ArmJointType::continuous) continue;
+    const ArmJoint& leader = model_->joints[model_->activeJoints[static_cast<std::size_t>(j.mimicCoordinate)]];
+    const double a = j.mimicMultiplier * leader.lower + j.mimicOffset;
+    const double b = j.mimicMultiplier * leader.upper + j.mimicOffset;
+    if (std::min(a, b) < j.lower || std::max(a, b) > j.upper) {
+      std::ostringstream why;
+      why << file.robotPath << ": joint '" << j.name << "' mimics joint '" << j.mimics << "' and reaches ["
+          << std::min(a, b) << ", " << std::max(a, b) << "] over that joint's limits, beyond its own [" << j.lower
+          << ", " << j.upper << "] (it follows its leader there, as in MoveIt)";
+      warnings_.push_back(why.str());
+    }
+  }
   const PlanningSceneYaml sceneFile = readPlanningSceneYaml(file.scenePath);
   const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);
   allowedPlanningTime_ = request.allowedPlanningTime;

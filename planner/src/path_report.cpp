@@ -41,29 +41,20 @@ PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ob::S
 }
 
 ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& path,
-                                         const ArmMotionClearance& clearance, double step) {
+                                         const ompl::geometric::PathGeometric& samples,
+                                         const ArmMotionClearance& clearance) {
   ArmPathClearance m;
   m.min = m.certifiedMin = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i) {
     m.certifiedMin = std::min(m.certifiedMin, clearance.along(path.getState(i), path.getState(i + 1)).lower);
   }
-  // More states than this would not fit the interpolation's count, nor the memory.
-  const double states = std::ceil(path.length() / step) + 1;
-  if (!(states <= kMaxMeasuredStates)) {
-    std::ostringstream why;
-    why << "measuring a path of length " << path.length() << " every " << step << " would take " << states
-        << " states, more than " << kMaxMeasuredStates;
-    throw InputError(why.str());
-  }
-  ompl::geometric::PathGeometric dense(path);
-  dense.interpolate(static_cast<unsigned>(states));
   double sum = 0.0;
-  for (std::size_t i = 0; i < dense.getStateCount(); ++i) {
-    const double c = clearance.at(dense.getState(i));
+  for (std::size_t i = 0; i < samples.getStateCount(); ++i) {
+    const double c = clearance.at(samples.getState(i));
     m.min = std::min(m.min, c);
     sum += c;
   }
-  m.statesSampled = dense.getStateCount();
+  m.statesSampled = samples.getStateCount();
   if (m.statesSampled > 0) m.mean = sum / static_cast<double>(m.statesSampled);
   if (path.getStateCount() < 2) m.certifiedMin = m.min;
   return m;

@@ -112,7 +112,9 @@ bool isOptimizingPlanner(const std::string& name) {
 
 std::optional<std::string> plannerConflict(const std::string& name, const ompl::base::OptimizationObjective* objective,
                                            const ompl::base::StateSpace& space) {
-  const bool clearance = dynamic_cast<const ompl::base::MaximizeMinClearanceObjective*>(objective) != nullptr;
+  // A clearance objective, OMPL's for rigid bodies or the arms' (ArmClearanceObjective): either is
+  // one to maximize, which no other objective here is.
+  const bool clearance = objective != nullptr && objective->isCostBetterThan(ompl::base::Cost(1.0), ompl::base::Cost(0.0));
   if (clearance && (name == "fmt" || name == "bfmt")) {
     return "planner " + name + " cannot plan for the clearance objective (OMPL's FMT* and BFMT* crash with it); " +
            "use rrtstar, informedrrtstar, bitstar or prmstar";
@@ -131,7 +133,7 @@ std::optional<std::string> plannerConflict(const std::string& name, const ompl::
   if (lengthObjective && !informedSpace && (name == "informedrrtstar" || name == "bitstar" || name == "cforest")) {
     return "planner " + name + " cannot plan for path length in this state space (" + space.getName() +
            "): OMPL's informed sampling, which it uses, works only in real-vector, SE(2) and SE(3) spaces; use " +
-           "rrtstar, rrtsharp or prmstar, or --objective clearance";
+           "rrtstar, rrtsharp or prmstar, or the clearance objective";
   }
   return std::nullopt;
 }

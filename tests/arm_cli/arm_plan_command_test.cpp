@@ -549,10 +549,61 @@ TEST(ArmPlanningProblem, MimicJointFollowsItsLeader) {
             (dir / "request.yaml").string() +
                 ":8: goal joint 'right_finger' mimics joint 'left_finger' of robot 'gripper': constrain the joint it "
                 "follows");
+  // A follower whose own limits its leader's range overruns is followed there, with a warning.
+  std::string narrow = readAll(dir / "gripper.urdf");
+  narrow.replace(narrow.rfind("upper='0.03'"), 12, "upper='0.01'");
+  std::ofstream(dir / "gripper.urdf") << narrow;
   request("0", "left_finger");
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
+    const std::vector<std::string> w = mimicWarnings(p);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0], (dir / "gripper.urdf").string() +
+                        ": joint 'right_finger' mimics joint 'left_finger' and reaches [0, 0.03] over that joint's "
+                        "limits, beyond its own [0, 0.01] (it follows its leader there, as in MoveIt)");
+  }
   const PlanRun r = plan({(dir / "problem.cfg").string(), "--seed", "1", "--path", (dir / "path.txt").string()}, dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(readAll(dir / "path.txt").find("# joints: left_finger\n"), std::string::npos) << readAll(dir / "path.txt");
+}
+
+// A finger that mimics its leader at 3 times its travel, and a plate 0.4 mm thick across its way:
+// the discrete motion validator checks the leader every 0.5 mm, the finger moves 1.5 mm between
+// checks and steps over the plate, and OMPL reports a solution. The summary's finer measure finds
+// the path in contact: said on a `contact` line, exit status 1 (it was "solved yes", exit 0). The
+// certified validator finds no path at all.
+TEST(ArmPlanCommand, PathThatStepsOverAThinPlateIsNotReportedFree) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "grip.urdf")
+      << "<robot name='grip'>\n"
+         "  <link name='base'><collision><origin xyz='0 0 -0.1'/><geometry><box size='0.2 0.2 0.02'/></geometry>"
+         "</collision></link>\n"
+         "  <link name='fl'><collision><geometry><box size='0.02 0.001 0.05'/></geometry></collision></link>\n"
+         "  <link name='fr'><collision><geometry><box size='0.02 0.001 0.05'/></geometry></collision></link>\n"
+         "  <joint name='jl' type='prismatic'><parent link='base'/><child link='fl'/><origin xyz='0 0.02 0'/>"
+         "<axis xyz='0 1 0'/><limit lower='0' upper='0.05' effort='1' velocity='1'/></joint>\n"
+         "  <joint name='jr' type='prismatic'><parent link='base'/><child link='fr'/><origin xyz='0 -0.02 0'/>"
+         "<axis xyz='0 -1 0'/><limit lower='0' upper='0.2' effort='1' velocity='1'/>"
+         "<mimic joint='jl' multiplier='3'/></joint>\n"
+         "</robot>\n";
+  std::ofstream(dir / "scene.yaml")
+      << "name: plate\nworld:\n  collision_objects:\n    - id: plate\n      header: {frame_id: world}\n"
+         "      pose: {position: {x: 0, y: -0.08, z: 0}, orientation: {x: 0, y: 0, z: 0, w: 1}}\n"
+         "      primitives: [{type: box, dimensions: [0.1, 0.0004, 0.1]}]\n"
+         "      primitive_poses: [{position: {x: 0, y: 0, z: 0}, orientation: {x: 0, y: 0, z: 0, w: 1}}]\n";
+  std::ofstream(dir / "request.yaml")
+      << "group_name: g\nstart_state:\n  joint_state:\n    name: [jl]\n    position: [0]\n"
+         "goal_constraints:\n  - joint_constraints:\n"
+         "      - {joint_name: jl, position: 0.04, tolerance_above: 0.001, tolerance_below: 0.001}\n";
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = plate\nrobot = grip.urdf\nscene = scene.yaml\n"
+                                        "request = request.yaml\n";
+  const std::string cfg = (dir / "problem.cfg").string();
+  PlanRun r = plan({cfg, "--seed", "1", "--time", "1"}, dir);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("contact     the path comes within the safety margin"), std::string::npos) << r.out;
+  r = plan({cfg, "--seed", "1", "--time", "1", "--motion", "certified"}, dir);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_EQ(r.out.find("solved      yes"), std::string::npos) << r.out;
 }
 
 // A joint whose limits are equal (locked) stands at them: it is no coordinate (OMPL cannot plan

@@ -172,6 +172,12 @@ TEST(SrdfCommand, BadInputWritesNothing) {
   EXPECT_NE(r.err.find("broken.urdf"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(out + ".partial"));
+  // An existing file that is not an SRDF (a mesh the robot reads, named by mistake) is kept.
+  std::ofstream(dir / "mesh.stl") << "solid s\nendsolid s\n";
+  r = runAdsd("srdf", {urdf.string(), "--out", (dir / "mesh.stl").string()}, dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("exists and is not an SRDF"), std::string::npos) << r.err;
+  EXPECT_EQ(readAll(dir / "mesh.stl"), "solid s\nendsolid s\n");
 }
 
 }  // namespace

@@ -36,15 +36,12 @@ struct ArmPathClearance {
   double certifiedMin = 0.0;  ///< a lower bound of the least clearance anywhere along the path
 };
 
-/// \brief The most states measureArmPathClearance interpolates a path to.
-constexpr double kMaxMeasuredStates = 1e7;
-
-/// \brief Measures \p path with \p clearance: its exact clearance at the path's states
-/// interpolated \p step apart (the space's distance; a copy is interpolated), and the least of
-/// its motions' certified lower bounds (ArmMotionClearance::along). Throws adsd::InputError when
-/// that would take more than kMaxMeasuredStates states.
+/// \brief Measures \p path with \p clearance: its exact clearance at the states of \p samples (the
+/// path interpolated: the same states another measure took, so that the two compare), and the
+/// least of the path's motions' certified lower bounds (ArmMotionClearance::along).
 ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& path,
-                                         const ArmMotionClearance& clearance, double step);
+                                         const ompl::geometric::PathGeometric& samples,
+                                         const ArmMotionClearance& clearance);
 
 /// \brief Writes one state per line, its real values separated by spaces (SE(2): x y yaw;
 /// SE(3): x y z qx qy qz qw). Written to a temporary file renamed on success, so a failure

@@ -24,8 +24,9 @@ bool isOptimizingPlanner(const std::string& name);
 
 /// \brief Why planner \p name cannot plan for \p objective in state space \p space, or nullopt
 /// when it can:
-///  - OMPL's FMT* and BFMT* with the clearance objective (MaximizeMinClearanceObjective) end in a
-///    segmentation fault when the planner is freed, in 1.5.2 as planned or benchmarked here;
+///  - OMPL's FMT* and BFMT* with a clearance objective (one to maximize: OMPL's
+///    MaximizeMinClearanceObjective, or the arms' ArmClearanceObjective) end in a segmentation
+///    fault, in 1.5.2 as planned or benchmarked here;
 ///  - TRRT and BiTRRT take the objective's cost as a cost map to keep low along the tree, while
 ///    the clearance objective's is a clearance to keep high: with it they solved no problem tried;
 ///  - InformedRRT*, BIT* and CForest sample the path-length objective's informed set with OMPL's
