@@ -693,9 +693,8 @@ struct Tools {
 
 /// The problem and planners of every combination of checker and motion validator that \p a asks
 /// for, for \p input: building them reads every file and checks every planner, so that what is
-/// wrong with the input stops the command before a run. Prints the problem's warnings when \p warn.
-std::vector<std::unique_ptr<Combination>> buildCombinations(const BenchmarkArguments& a, const BenchmarkInput& input,
-                                                            bool warn) {
+/// wrong with the input stops the command before a run. Prints the problem's warnings.
+std::vector<std::unique_ptr<Combination>> buildCombinations(const BenchmarkArguments& a, const BenchmarkInput& input) {
   std::vector<std::unique_ptr<Combination>> combinations;
   for (const CheckerKind checker : a.checkers) {
     for (const MotionKind motion : a.motions) {
@@ -707,13 +706,13 @@ std::vector<std::unique_ptr<Combination>> buildCombinations(const BenchmarkArgum
       options.motion = motion;
       c->problem = input.make(options);
       const bool first = combinations.empty();
-      if (first && warn) {
+      if (first) {
         for (const std::string& w : c->problem->warnings()) std::cerr << "adsd benchmark: warning: " << w << '\n';
       }
       c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), input.name);
       Combination* self = c.get();
       for (const PlannerEntry& entry : input.planners) {
-        ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->setup(), first && warn);
+        ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->setup(), first);
         const std::string label = (entry.label != entry.name ? entry.label : planner->getName()) + " [" + c->label() + "]";
         c->benchmark->addPlanner(
             std::make_shared<MeasuredPlanner>(planner, label, [self](double seconds) { captureQueries(*self, seconds); }));
@@ -734,8 +733,10 @@ std::pair<fs::path, std::string> outputNames(const BenchmarkArguments& a, const 
   return {directory, stem};
 }
 
-/// Benchmarks one problem: its combinations, runs, log, database and plots.
-void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, const Tools& tools,
+/// Benchmarks one problem, its \p combinations built by buildCombinations: runs, log, database and
+/// plots.
+void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
+                  std::vector<std::unique_ptr<Combination>> combinations, const Tools& tools,
                   const std::optional<std::uint64_t>& seed) {
   // Which runs.
   const unsigned firstRun = a.runRange ? a.runRange->first : 0;
@@ -746,9 +747,7 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input, cons
   request.displayProgress = false;
   request.saveConsoleOutput = false;  // OMPL would write ompl_HOST_DATE.console into the current directory
 
-  // Everything that can be wrong with the input is found here, before any file is written.
   const std::vector<PlannerEntry>& entries = input.planners;
-  std::vector<std::unique_ptr<Combination>> combinations = buildCombinations(a, input, true);
   unsigned currentRun = 0;
   std::unique_ptr<ProgressBar> progress;
   for (const std::unique_ptr<Combination>& c : combinations) {
@@ -897,8 +896,7 @@ int benchmark(const std::vector<std::string>& args) {
   std::optional<std::uint64_t> seed = a.seed;
   if (!seed && a.runRange) seed = a.runRange->first + kShardSeedOffset;
   if (seed) ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(*seed));
-  // Several problems (a directory): each one's outputs must have a name of their own, and each one
-  // is built once before any runs, so that a bad one stops the command before the others' runs.
+  // Several problems (a directory): each one's outputs must have a name of their own.
   if (inputs.size() > 1) {
     std::map<fs::path, const BenchmarkInput*> byOutput;
     for (const BenchmarkInput& input : inputs) {
@@ -910,9 +908,13 @@ int benchmark(const std::vector<std::string>& args) {
                          "': give each problem its own `name =` in [problem])");
       }
     }
-    for (const BenchmarkInput& input : inputs) buildCombinations(a, input, false);
   }
-  for (const BenchmarkInput& input : inputs) benchmarkOne(a, input, tools, seed);
+  // Every problem is built, with its planners, before any run and before any file is written:
+  // what is wrong with any of them (a bad file, a planner the space cannot take) stops the command
+  // first.
+  std::vector<std::vector<std::unique_ptr<Combination>>> built;
+  for (const BenchmarkInput& input : inputs) built.push_back(buildCombinations(a, input));
+  for (std::size_t i = 0; i < inputs.size(); ++i) benchmarkOne(a, inputs[i], std::move(built[i]), tools, seed);
   return 0;
 }
 

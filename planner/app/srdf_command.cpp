@@ -10,7 +10,6 @@
 // (docs/problem-files.md). Pairs never seen in contact are disabled only with --never, since that
 // is a guess the checker would then rely on. Exit status: 0 written, 2 bad input or usage.
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -112,24 +111,6 @@ std::optional<SrdfArguments> parseArguments(const std::vector<std::string>& args
   return a;
 }
 
-/// Writes the SRDF to a temporary name beside \p file and renames it into place, so that a
-/// failure leaves no half-written file.
-void writeSrdfWhole(const ArmModel& model, const ArmCollisionPairs& pairs, const std::string& file) {
-  const std::string temporary = file + ".partial";
-  try {
-    writeSrdf(model, pairs, temporary);
-  } catch (...) {
-    std::remove(temporary.c_str());
-    throw;
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) {
-    std::remove(temporary.c_str());
-    throw InputError(file + ": cannot rename the finished SRDF file into place: " + ec.message());
-  }
-}
-
 int run(const SrdfArguments& a) {
   const auto started = std::chrono::steady_clock::now();
   const ArmModel model = readUrdf(a.urdf, a.packagePath);
@@ -138,7 +119,7 @@ int run(const SrdfArguments& a) {
   const std::size_t atDefault = a.defaultPose ? disablePairsInContactAt(model, pairs, defaultJointVector(model)) : 0;
   const PairSamplingResult found = disablePairsBySampling(
       model, pairs, a.states, a.seed, a.never ? NeverInContact::disable : NeverInContact::keep);
-  writeSrdfWhole(model, pairs, a.out);
+  writeSrdf(model, pairs, a.out);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
   std::size_t withGeometry = 0;

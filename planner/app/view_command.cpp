@@ -29,6 +29,7 @@
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
+#include "adsd/planner/state_pose.h"
 #include "arm_viewer_html.h"
 #include "commands.h"
 #include "viewer_html.h"
@@ -129,12 +130,6 @@ void readPathLines(const std::string& file,
 /// How far beyond a bound, relative to the bounds' extent or magnitude, a path file's position may
 /// lie and be taken (clamped): OMPL's printAsMatrix rounds to six significant digits.
 constexpr double kPathBoundsSlack = 1e-5;
-
-/// The position bounds of \p si's rigid-body space.
-const ob::RealVectorBounds& positionBounds(const ob::SpaceInformation& si, RigidBodySpace space) {
-  return space == RigidBodySpace::se2 ? si.getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
-                                      : si.getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
-}
 
 /// The position bounds of \p si's rigid-body space, as "x in [a, b], y in [c, d]...".
 std::string boundsText(const ob::SpaceInformation& si, RigidBodySpace space) {

@@ -1,5 +1,6 @@
 #include "adsd/planner/arm_collision_pairs.h"
 
+#include <filesystem>
 #include <fstream>
 
 #include <tinyxml.h>
@@ -104,7 +105,19 @@ void writeSrdf(const ArmModel& model, const ArmCollisionPairs& pairs, const std:
     e->SetAttribute("reason", d.reason);
     robot->LinkEndChild(e);
   }
-  if (!doc.SaveFile(srdfPath.c_str())) throw InputError(srdfPath + ": cannot write the SRDF file");
+  // Through a temporary name renamed into place: a failure leaves no half-written file.
+  const std::string temporary = srdfPath + ".partial";
+  std::error_code ec;
+  if (!doc.SaveFile(temporary.c_str())) {
+    std::filesystem::remove(temporary, ec);
+    throw InputError(srdfPath + ": cannot write the SRDF file");
+  }
+  std::filesystem::rename(temporary, srdfPath, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw InputError(srdfPath + ": cannot rename the finished SRDF file into place: " + ec.message());
+  }
 }
 
 }  // namespace adsd::planner

@@ -29,6 +29,14 @@ std::size_t ArmModel::jointIndex(const std::string& jointName) const {
   throw InputError(sourceFile + ": no movable joint named '" + jointName + "'");
 }
 
+std::pair<double, double> ArmModel::positionRange(const ArmJoint& joint) const {
+  if (joint.mimicCoordinate < 0) return {joint.lower, joint.upper};
+  const ArmJoint& leader = joints[activeJoints[static_cast<std::size_t>(joint.mimicCoordinate)]];
+  const double a = joint.mimicMultiplier * leader.lower + joint.mimicOffset;
+  const double b = joint.mimicMultiplier * leader.upper + joint.mimicOffset;
+  return {std::min(a, b), std::max(a, b)};
+}
+
 std::size_t ArmModel::linkIndex(const std::string& linkName) const {
   for (std::size_t i = 0; i < links.size(); ++i) {
     if (links[i].name == linkName) return i;

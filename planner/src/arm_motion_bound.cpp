@@ -2,23 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace adsd::planner {
-
-namespace {
-
-/// The range of positions a joint takes over the joint vectors within the limits: its own limits,
-/// or for a mimic joint its leader's, scaled and offset.
-std::pair<double, double> positionRange(const ArmModel& model, const ArmJoint& joint) {
-  if (joint.mimicCoordinate < 0) return {joint.lower, joint.upper};
-  const ArmJoint& leader = model.joints[model.activeJoints[static_cast<std::size_t>(joint.mimicCoordinate)]];
-  const double a = joint.mimicMultiplier * leader.lower + joint.mimicOffset;
-  const double b = joint.mimicMultiplier * leader.upper + joint.mimicOffset;
-  return {std::min(a, b), std::max(a, b)};
-}
-
-}  // namespace
 
 ArmMotionBound::ArmMotionBound(const ArmModel& model) : links_(model.links.size()), dof_(model.dof()) {
   // The joints that move: every joint of the joint vector, and every mimic joint, which moves
@@ -43,7 +28,7 @@ ArmMotionBound::ArmMotionBound(const ArmModel& model) : links_(model.links.size(
   std::vector<double> step(links_, 0.0);
   for (std::size_t l = 1; l < links_; ++l) {
     const ArmJoint& j = model.joints[static_cast<std::size_t>(model.links[l].parentJoint)];
-    const auto [lower, upper] = positionRange(model, j);
+    const auto [lower, upper] = model.positionRange(j);
     step[l] = j.origin.translation().norm() +
               (j.type == ArmJointType::prismatic ? std::max(std::abs(lower), std::abs(upper)) : 0.0);
   }

@@ -121,14 +121,12 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   // the joints it plans for only): said, since the robot's description then disagrees with itself.
   for (const ArmJoint& j : model_->joints) {
     if (j.mimicCoordinate < 0 || j.type == ArmJointType::continuous) continue;
-    const ArmJoint& leader = model_->joints[model_->activeJoints[static_cast<std::size_t>(j.mimicCoordinate)]];
-    const double a = j.mimicMultiplier * leader.lower + j.mimicOffset;
-    const double b = j.mimicMultiplier * leader.upper + j.mimicOffset;
-    if (std::min(a, b) < j.lower || std::max(a, b) > j.upper) {
+    const auto [low, high] = model_->positionRange(j);
+    if (low < j.lower || high > j.upper) {
       std::ostringstream why;
-      why << file.robotPath << ": joint '" << j.name << "' mimics joint '" << j.mimics << "' and reaches ["
-          << std::min(a, b) << ", " << std::max(a, b) << "] over that joint's limits, beyond its own [" << j.lower
-          << ", " << j.upper << "] (it follows its leader there, as in MoveIt)";
+      why << file.robotPath << ": joint '" << j.name << "' mimics joint '" << j.mimics << "' and reaches [" << low
+          << ", " << high << "] over that joint's limits, beyond its own [" << j.lower << ", " << j.upper
+          << "] (it follows its leader there, as in MoveIt)";
       warnings_.push_back(why.str());
     }
   }
@@ -152,13 +150,9 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
       std::string unknown;
       int line = 0;
       for (const auto& [given, position] : request.start) {
-        bool movable = false;
-        for (std::size_t k = 0; k < dof && !movable; ++k) {
-          movable = model_->joints[model_->activeJoints[k]].name == given;
-        }
-        bool exists = movable;
-        for (const ArmJoint& j : model_->joints) exists = exists || j.name == given;
-        if (exists) continue;
+        const std::string& name = given;  // a structured binding: clang 14 captures none
+        const auto named = [&name](const ArmJoint& j) { return j.name == name; };
+        if (std::any_of(model_->joints.begin(), model_->joints.end(), named)) continue;
         unknown += (unknown.empty() ? "'" : ", '") + given + "'";
         if (const auto l = request.startLines.find(given); l != request.startLines.end() && line == 0) line = l->second;
       }

@@ -8,6 +8,10 @@
 
 namespace adsd::planner {
 
+void dropByteOrderMark(std::string& text) {
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+}
+
 std::string readInputFile(const std::string& path, const std::string& what) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -18,9 +22,8 @@ std::string readInputFile(const std::string& path, const std::string& what) {
   std::ostringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read the " + what);
-  // A UTF-8 byte-order mark, which Windows editors write, is no part of the text.
   std::string text = buffer.str();
-  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  dropByteOrderMark(text);
   return text;
 }
 

@@ -11,4 +11,8 @@ namespace adsd::planner {
 /// an InputError naming it as \p what ("scene file").
 std::string readInputFile(const std::string& path, const std::string& what);
 
+/// \brief Removes a UTF-8 byte-order mark, which Windows editors write, from the start of \p text:
+/// it is no part of the first line.
+void dropByteOrderMark(std::string& text);
+
 }  // namespace adsd::planner

@@ -114,7 +114,8 @@ std::optional<std::string> plannerConflict(const std::string& name, const ompl::
                                            const ompl::base::StateSpace& space) {
   // A clearance objective, OMPL's for rigid bodies or the arms' (ArmClearanceObjective): either is
   // one to maximize, which no other objective here is.
-  const bool clearance = objective != nullptr && objective->isCostBetterThan(ompl::base::Cost(1.0), ompl::base::Cost(0.0));
+  const bool clearance =
+      objective != nullptr && objective->isCostBetterThan(ompl::base::Cost(1.0), ompl::base::Cost(0.0));
   if (clearance && (name == "fmt" || name == "bfmt")) {
     return "planner " + name + " cannot plan for the clearance objective (OMPL's FMT* and BFMT* crash with it); " +
            "use rrtstar, informedrrtstar, bitstar or prmstar";

@@ -81,12 +81,6 @@ ob::ValidStateSamplerAllocator samplerAllocator(const Setting& s) {
                    "' (expected uniform, gaussian, obstacle_based, max_clearance or bridge_test)");
 }
 
-/// The position bounds of \p si's rigid-body space.
-const ob::RealVectorBounds& volumeBounds(const ob::SpaceInformation& si, RigidBodySpace space) {
-  return space == RigidBodySpace::se2 ? si.getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
-                                      : si.getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
-}
-
 std::string describeOr(const ProblemFile* file, bool start) {
   if (file == nullptr) return start ? "start" : "goal";
   return (start ? file->start : file->goal).location.describe();
@@ -194,7 +188,7 @@ void PlanningProblem::build(const Pose& start, const Pose& goal, const std::opti
     if (!si->satisfiesBounds(s)) {
       // Name the coordinate outside, its line and the bounds it is outside of.
       const Vec3 position = (isStart ? start : goal).translation();
-      const ob::RealVectorBounds& bounds = volumeBounds(*si, space);
+      const ob::RealVectorBounds& bounds = positionBounds(*si, space);
       std::string where = describeOr(file, isStart);
       std::ostringstream why;
       for (std::size_t axis = 0; axis < bounds.low.size(); ++axis) {

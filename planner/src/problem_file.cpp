@@ -23,6 +23,7 @@
 #include "adsd/error.h"
 #include "adsd/tolerances.h"
 #include "decimal_number.h"
+#include "input_file.h"
 #include "adsd/planner/planner_registry.h"
 
 namespace adsd::planner {
@@ -620,8 +621,7 @@ ProblemFile parseProblemFile(std::istream& in, const std::string& sourceName, co
   buffer << in.rdbuf();
   std::string text = buffer.str();
   if (in.bad()) throw InputError(sourceName + ": cannot read the file");
-  // A UTF-8 byte-order mark, which Windows editors write, is no part of the first line.
-  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  dropByteOrderMark(text);
   if (text.find('\0') != std::string::npos) throw InputError(sourceName + ": not a text file (contains a NUL byte)");
 
   std::vector<Entry> located;

@@ -53,6 +53,11 @@ void poseToState(const Pose& pose, RigidBodySpace space, ob::State* state) {
   }
 }
 
+const ob::RealVectorBounds& positionBounds(const ob::SpaceInformation& si, RigidBodySpace space) {
+  return space == RigidBodySpace::se2 ? si.getStateSpace()->as<ob::SE2StateSpace>()->getBounds()
+                                      : si.getStateSpace()->as<ob::SE3StateSpace>()->getBounds();
+}
+
 double translationDistance(const ob::State* a, const ob::State* b, RigidBodySpace space) {
   return (poseFromState(a, space).translation() - poseFromState(b, space).translation()).norm();
 }

@@ -535,15 +535,16 @@ TEST(ArmPlanningProblem, MimicJointFollowsItsLeader) {
     EXPECT_EQ(p.model().dof(), 1u);
     EXPECT_TRUE(mimicWarnings(p).empty());
   }
-  request("0.01", "left_finger");
-  {
+  // The problem's one warning about a mimic joint (or how many there were).
+  const auto theMimicWarning = [&] {
     const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
     const std::vector<std::string> w = mimicWarnings(p);
-    ASSERT_EQ(w.size(), 1u);
-    EXPECT_EQ(w[0], (dir / "request.yaml").string() +
-                        ":5: start joint 'right_finger' stands at 0 by joint 'left_finger', which it mimics, "
-                        "not at 0.01 as given");
-  }
+    return w.size() == 1 ? w[0] : std::to_string(w.size()) + " mimic warnings";
+  };
+  request("0.01", "left_finger");
+  EXPECT_EQ(theMimicWarning(), (dir / "request.yaml").string() +
+                                   ":5: start joint 'right_finger' stands at 0 by joint 'left_finger', which it "
+                                   "mimics, not at 0.01 as given");
   request("0", "right_finger");
   EXPECT_EQ(armProblemError((dir / "problem.cfg").string()),
             (dir / "request.yaml").string() +
@@ -554,14 +555,10 @@ TEST(ArmPlanningProblem, MimicJointFollowsItsLeader) {
   narrow.replace(narrow.rfind("upper='0.03'"), 12, "upper='0.01'");
   std::ofstream(dir / "gripper.urdf") << narrow;
   request("0", "left_finger");
-  {
-    const ArmPlanningProblem p(readMotionBenchMakerProblem((dir / "problem.cfg").string()), CheckingOptions{});
-    const std::vector<std::string> w = mimicWarnings(p);
-    ASSERT_EQ(w.size(), 1u);
-    EXPECT_EQ(w[0], (dir / "gripper.urdf").string() +
-                        ": joint 'right_finger' mimics joint 'left_finger' and reaches [0, 0.03] over that joint's "
-                        "limits, beyond its own [0, 0.01] (it follows its leader there, as in MoveIt)");
-  }
+  EXPECT_EQ(theMimicWarning(), (dir / "gripper.urdf").string() +
+                                   ": joint 'right_finger' mimics joint 'left_finger' and reaches [0, 0.03] over that "
+                                   "joint's limits, beyond its own [0, 0.01] (it follows its leader there, as in "
+                                   "MoveIt)");
   const PlanRun r = plan({(dir / "problem.cfg").string(), "--seed", "1", "--path", (dir / "path.txt").string()}, dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(readAll(dir / "path.txt").find("# joints: left_finger\n"), std::string::npos) << readAll(dir / "path.txt");

@@ -53,7 +53,8 @@ std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmMode
 void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, ArmCollisionPairs& pairs);
 
 /// \brief Writes the disabled pairs as an SRDF file (a `<robot name="">` with one
-/// `<disable_collisions>` per pair), which disablePairsFromSrdf() and MoveIt read. Throws
+/// `<disable_collisions>` per pair), which disablePairsFromSrdf() and MoveIt read, through a
+/// temporary name renamed into place, so that a failure leaves no half-written file. Throws
 /// adsd::InputError when the file cannot be written.
 void writeSrdf(const ArmModel& model, const ArmCollisionPairs& pairs, const std::string& srdfPath);
 

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "adsd/mesh.h"
@@ -85,6 +86,9 @@ struct ArmModel {
     if (joint.mimicCoordinate >= 0) return joint.mimicMultiplier * q[joint.mimicCoordinate] + joint.mimicOffset;
     return joint.lockedPosition;
   }
+  /// \brief The positions \p joint takes over the joint vectors within the limits, [low, high]:
+  /// its own limits, or for a mimic joint its leader's scaled and offset (which may pass its own).
+  std::pair<double, double> positionRange(const ArmJoint& joint) const;
   /// \brief Joint-vector coordinate of the joint named \p name; throws InputError when there is
   /// no such non-fixed joint.
   std::size_t jointIndex(const std::string& name) const;

@@ -2,8 +2,10 @@
 /// \file
 /// \brief The OMPL boundary: SE(2)/SE(3) states to and from adsd::Pose (STYLE habit 9).
 
+#include <ompl/base/SpaceInformation.h>
 #include <ompl/base/State.h>
 #include <ompl/base/StateSpace.h>
+#include <ompl/base/spaces/RealVectorBounds.h>
 
 #include "adsd/mesh.h"
 #include "adsd/planner/rigid_body_scene.h"
@@ -16,6 +18,9 @@ Pose poseFromState(const ompl::base::State* state, RigidBodySpace space);
 
 /// \brief Writes \p pose into \p state. For SE(2) only x, y and the yaw about z are kept.
 void poseToState(const Pose& pose, RigidBodySpace space, ompl::base::State* state);
+
+/// \brief The position bounds (the volume) of \p si's rigid-body state space.
+const ompl::base::RealVectorBounds& positionBounds(const ompl::base::SpaceInformation& si, RigidBodySpace space);
 
 /// \brief Translation between two states (world frame length units).
 double translationDistance(const ompl::base::State* a, const ompl::base::State* b, RigidBodySpace space);
