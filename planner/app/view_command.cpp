@@ -235,10 +235,18 @@ ompl::geometric::PathGeometric readArmPathFile(const std::string& file, const Ar
   return path;
 }
 
+/// A start or goal in collision is shown, with a warning, rather than refused as `adsd plan`
+/// refuses it: seeing where it touches is why one looks.
+CheckingOptions showingOptions() {
+  CheckingOptions options;
+  options.keepEndpointsInCollision = true;
+  return options;
+}
+
 /// `adsd view ARM.cfg`: the arm viewer (arm_viewer_html.h).
 int viewArm(const ViewArguments& a) {
   const MotionBenchMakerProblem file = readMotionBenchMakerProblem(a.problem);
-  ArmPlanningProblem problem(file, CheckingOptions{});
+  ArmPlanningProblem problem(file, showingOptions());
   for (const std::string& w : problem.warnings()) std::cerr << "adsd view: warning: " << w << '\n';
   // As `adsd plan` does before solving: the space's validity-checking resolution.
   problem.setup().setup();
@@ -264,7 +272,7 @@ int view(const std::vector<std::string>& args) {
   if (isArmProblemFile(a->problem)) return viewArm(*a);
   const ProblemFile file = readProblemFile(a->problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd view: warning: " << w << '\n';
-  PlanningProblem problem(file, CheckingOptions{});
+  PlanningProblem problem(file, showingOptions());
   for (const std::string& w : problem.warnings()) std::cerr << "adsd view: warning: " << w << '\n';
 
   // As `adsd plan` does before solving: the space's validity-checking resolution, which the

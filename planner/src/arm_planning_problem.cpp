@@ -279,7 +279,8 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
         selfContact = selfContact || pairs[k].rfind("links ", 0) == 0;
       }
       if (selfContact) why << " (an SRDF's <disable_collisions> leaves a pair of links unchecked)";
-      throw InputError(why.str());
+      if (!options_.keepEndpointsInCollision) throw InputError(why.str());
+      warnings_.push_back(why.str());
     }
   }
   setup_->setStartState(startState);

@@ -205,7 +205,8 @@ void PlanningProblem::build(const Pose& start, const Pose& goal, const std::opti
       std::ostringstream why;
       why << describeOr(file, isStart) << ": " << which << " is in collision (clearance " << checker_->clearance(s)
           << ", safety margin " << options_.safetyMargin << ")";
-      throw InputError(why.str());
+      if (!options_.keepEndpointsInCollision) throw InputError(why.str());
+      warnings_.push_back(why.str());
     }
   }
   setup_->setStartAndGoalStates(startState, goalState, file != nullptr ? file->goalThreshold : 1e-6);

@@ -246,6 +246,24 @@ TEST(ArmPlanCommand, StartInCollisionNamesTheRequestLine) {
                 "link 'elbow' and obstacle 'table'\n");
 }
 
+// `adsd view` shows the same start, with the error as a warning: where it touches is what one
+// looks for.
+TEST(ArmPlanCommand, ViewShowsAStartInCollisionWithAWarning) {
+  SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
+  const fs::path dir = workDirectory();
+  const std::string text =
+      replaced(shippedRequest(), "position: [0, -0.6, -1.2, 0, 0.5, 0]", "position: [0, 1.9, 0, 0, 0, 0]");
+  const fs::path cfg = writeProblem(dir, text), html = dir / "touching.html";
+  const PlanRun v = runAdsd("view", {cfg.string(), "--html", html.string()}, dir);
+  EXPECT_EQ(v.status, 0) << v.err;
+  EXPECT_EQ(v.err, "adsd view: warning: " + (dir / "request.yaml").string() + ":" +
+                       std::to_string(lineOf(text, "position: [0, 1.9")) +
+                       ": the start state is in collision (clearance 0, safety margin 0): link 'bicep' and obstacle "
+                       "'table', link 'elbow' and obstacle 'table'\n");
+  EXPECT_NE(v.out.find("clearance   min 0 m"), std::string::npos) << v.out;
+  EXPECT_TRUE(fs::is_regular_file(html));
+}
+
 // Without its SRDF, DRC-Hubo's own pose has links in contact that are not adjacent in the URDF:
 // the error names them and the SRDF element that leaves them unchecked.
 TEST(ArmPlanCommand, SelfContactNamesTheLinksAndTheSrdfRemedy) {

@@ -11,7 +11,8 @@ directory that does not exist: exit status 2 with one line on stderr naming the 
 stdout (no plan was made first). `adsd view` of a rigid problem's path file: a yaw outside
 [-pi, pi] (as tools that write [0, 2 pi) or unwrapped angles give it) and a comment after a
 state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
-no page is written.
+no page is written. A start in collision is refused by `adsd plan` and shown, with a warning
+naming its line, by `adsd view`.
 """
 import math
 import os
@@ -104,6 +105,24 @@ def main():
         expect_refused(adsd, ["view", office, "--path", outside, "--html", page], work,
                        f"adsd view: error: {outside}:2: the state lies outside the problem's bounds (x in [-10, 10]")
         check(not os.path.exists(page), "view of a state outside the bounds wrote a page")
+
+        # A start in collision (x = -9.95: the robot in the office's outer wall): `adsd plan`
+        # refuses it, `adsd view` shows it with a warning naming the line.
+        folder = os.path.dirname(os.path.abspath(office))
+        text = pathlib.Path(office).read_text()
+        text = text.replace("start.x = -6", "start.x = -9.95").replace("start.y = 2.5", "start.y = 0")
+        text = text.replace("= office_", f"= {folder}/office_")
+        touching = os.path.join(work, "touching.cfg")
+        pathlib.Path(touching).write_text(text)
+        expect_refused(adsd, ["plan", touching, "--time", "1"], work,
+                       f"adsd plan: error: {touching}:8: key 'problem.start.x': the start state is in collision")
+        shown = os.path.join(work, "touching.html")
+        r = run(adsd, ["view", touching, "--html", shown], work)
+        check(r.returncode == 0, f"view of a start in collision: exit {r.returncode} ({r.stderr.strip()})")
+        check(r.stderr.startswith(f"adsd view: warning: {touching}:8: key 'problem.start.x': the start state is in "
+                                  "collision (clearance 0"), f"view of a start in collision: stderr {r.stderr!r}")
+        check("clearance   min 0 " in r.stdout, f"view of a start in collision: stdout {r.stdout!r}")
+        check(os.path.isfile(shown), "view of a start in collision wrote no page")
     for f in failures:
         print("FAIL:", f)
     print(f"{len(failures)} failure(s)")

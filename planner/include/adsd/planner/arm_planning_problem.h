@@ -50,7 +50,8 @@ class ArmPlanningProblem {
   /// ("FILE:LINE: the start state is outside the joint limits (joint J = V, limits [L, U])") or
   /// in collision ("FILE:LINE: the start state is in collision (clearance X, safety margin M):
   /// link 'A' and obstacle 'O', links 'A' and 'B'", up to three pairs, from pairsInContact), the
-  /// line being that of the request's first joint of the start or goal.
+  /// line being that of the request's first joint of the start or goal. With
+  /// CheckingOptions::keepEndpointsInCollision, the last is a warning instead.
   ArmPlanningProblem(const MotionBenchMakerProblem& file, const CheckingOptions& options);
 
   ompl::geometric::SimpleSetup& setup() { return *setup_; }

@@ -34,6 +34,10 @@ struct CheckingOptions {
   DistanceOptions clearance = DistanceOptions::exactDistance();
   /// Replaces the file's objective when set.
   std::optional<ObjectiveKind> objective;
+  /// A start or goal in collision is a warning (warnings()) instead of an error. For showing a
+  /// problem (adsd view): the user whose start is refused wants to see where it touches. A planner
+  /// given such a problem finds nothing.
+  bool keepEndpointsInCollision = false;
 };
 
 /// \brief Everything a planner run needs, built from a problem file or from a scene in memory.
@@ -43,7 +47,8 @@ class PlanningProblem {
   /// space (the file's volume, or the environment's box widened to contain start and goal), sets
   /// the parameters of `[problem]` and the objective, and checks start and goal. Throws
   /// adsd::InputError naming the file, line and key for a missing mesh, an unknown space
-  /// parameter value, or a start or goal that is outside the bounds or invalid.
+  /// parameter value, or a start or goal that is outside the bounds or invalid (in collision: a
+  /// warning instead with CheckingOptions::keepEndpointsInCollision).
   PlanningProblem(const ProblemFile& file, const CheckingOptions& options);
 
   /// \brief A problem from meshes already in memory (tests, demos); bounds as for a file without
