@@ -249,6 +249,22 @@ TEST(TriangleDistance, RepeatedVertices) {
   expectDistance(pair({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}), 0.0);
 }
 
+// A corner of B 0.74 above a 1.4 cm face of A in the plane y = 0.25555 (CGAL's fandisk, a CAD
+// mesh, against the mushroom, found by an outside review): its foot came out 3e-16 off that
+// plane, outside the face's corner box (5e-17 thick), and the edges answered 2e-6 too far.
+TEST(TriangleDistanceRegression, CornerFarAboveAFaceOfConstantCoordinateMeetsItsInterior) {
+  const TrianglePair c = pair({0.1789, 0.25555, -0.0535}, {0.1697, 0.25555, -0.0674}, {0.1687, 0.25555, -0.0535},
+                              {0.20943673757555648, 1.0002922856765244, -0.011716142802311258},
+                              {0.17275487719336244, 0.99966491455999995, -0.059684878707933958},
+                              {0.17942189596691793, 1.039065543696698, -0.023602224061893384});
+  const auto o = reference(c);
+  ASSERT_NEAR(o.value, 0.99966491455999995 - 0.25555, 1e-15);
+  for (const TrianglePair& p : orderings(c)) {
+    const TrianglePairResult r = production(p);
+    EXPECT_TRUE(answersLikeOracle(p, r, o, true));
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Issue 3: the two documented failures of the PQP/FCL/Coal TriDist routine.
 
@@ -530,6 +546,20 @@ TEST(TriangleDistanceRandom, AgainstOracle) {
     return c;
   });
 
+  run("far above a flat face", 110, 8000, [](SeededRandom& r) {
+    // A small face (1e-3 ... 1e-1 across) in a plane of constant coordinate, as CAD meshes have
+    // them, and B's lowest corner 20 ... 2000 face sizes above a point over it: the foot of that
+    // corner carries rounding of its height, not of the face, and must still count as inside.
+    const double size = r.logUniform(-3, -1), level = r.uniform(-1, 1);
+    TrianglePair c;
+    for (Vec3& v : c.a) v = Vec3(r.uniform(-size, size), r.uniform(-size, size), level);
+    const Vec3 centroid = (c.a[0] + c.a[1] + c.a[2]) / 3.0;
+    const Vec3 tip = centroid + Vec3(r.uniform(-0.3, 0.3) * size, r.uniform(-0.3, 0.3) * size, size * r.logUniform(1.3, 3.3));
+    c.b = {tip, tip + r.uniform(0.1, 1) * size * Vec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.2, 1)),
+           tip + r.uniform(0.1, 1) * size * Vec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.2, 1))};
+    return shuffleAxes(c, r);
+  });
+
   EXPECT_GE(total, 100000);
   // The families hit what they are named for.
   EXPECT_GT(stats["generic"].intersecting, 2000);
@@ -541,6 +571,7 @@ TEST(TriangleDistanceRandom, AgainstOracle) {
   EXPECT_LT(stats["coplanar"].intersecting, 11000);
   EXPECT_GT(stats["near contact"].vertexFace, 6000);
   EXPECT_GT(stats["near contact"].intersecting, 2000);
+  EXPECT_GT(stats["far above a flat face"].vertexFace, 2000);
 }
 
 /// Triangles that cross each other with a margin (an edge pierces the other's interior well

@@ -16,9 +16,10 @@ inline constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 /// is indistinguishable from contact and reported as exactly 0. About 3.6e-15 relative: far below
 /// the 1e-10 x diagonal accuracy we promise, above what a crossing edge's interpolated point lies
 /// off the other plane (a few ulps; test_triangle_distance's crossing pairs must give exactly 0).
-/// The same number of ulps of a face's edge vectors grows the corner box that a point's foot must
-/// lie in to count as interior (triangle_distance.cpp, closestOnFace): the foot carries a few ulps
-/// of rounding, and a foot on an edge must not be refused for it.
+/// The same number of ulps of a face's edge vectors, and of the point's offset from the face,
+/// grows the corner box that a point's foot must lie in to count as interior (triangle_distance.cpp,
+/// closestOnFace): the foot carries a few ulps of rounding, and a foot on an edge, or on a face with
+/// a constant coordinate, must not be refused for it.
 inline constexpr double kContactSnapUlps = 16.0;
 
 /// Triangle routine: two edge directions count as parallel when |d1 x d2|^2 <= this x |d1|^2 |d2|^2
