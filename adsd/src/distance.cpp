@@ -53,6 +53,9 @@ void validate(const DistanceOptions& o, const Pose& poseA, const Pose& poseB) {
     case QueryMode::cap:
       if (!(o.cap > 0.0)) throw InputError("distance query: cap must be > 0");
       break;
+    default:  // a value cast into the enum: it would have run as an exact query, unasked
+      throw InputError("distance query: mode " + std::to_string(static_cast<int>(o.mode)) +
+                       " is none of exact, tolerance, threshold and cap");
   }
 }
 

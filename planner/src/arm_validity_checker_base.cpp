@@ -128,7 +128,9 @@ const Mesh& ArmValidityCheckerBase::bodyMesh(std::size_t b) const {
 
 std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base::State* state,
                                                                 std::size_t count) const {
-  const std::vector<Pose>& linkPoses = posesFor(state);
+  const std::vector<Pose>* poses = posesFor(state);
+  if (poses == nullptr) return {"a joint value that is not a number"};
+  const std::vector<Pose>& linkPoses = *poses;
   const ArmModel& model = *scene_->model;
   auto linkName = [&](std::size_t body) { return "'" + model.links[linkOfBody_[body]].name + "'"; };
   // An obstacle part is named after its object: splitIntoParts appends " part N" to the name.
@@ -169,12 +171,13 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
   return found;
 }
 
-const std::vector<Pose>& ArmValidityCheckerBase::posesFor(const ompl::base::State* state) const {
+const std::vector<Pose>* ArmValidityCheckerBase::posesFor(const ompl::base::State* state) const {
   ArmScratch& s = threadScratch();
   s.q.resize(space_->dof());
   space_->toJoints(state, s.q.data());
+  if (!std::all_of(s.q.begin(), s.q.end(), [](double x) { return std::isfinite(x); })) return nullptr;
   forwardKinematics(*scene_->model, s.q.data(), s.linkPoses);
-  return s.linkPoses;
+  return &s.linkPoses;
 }
 
 double ArmValidityCheckerBase::broadPhase(const std::vector<Pose>& linkPoses, double limit,
@@ -284,7 +287,9 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
                                                      const double* selfPairWeights, double subtract,
                                                      double cap) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  const std::vector<Pose>& linkPoses = posesFor(state);
+  const std::vector<Pose>* poses = posesFor(state);
+  if (poses == nullptr) return 0.0;
+  const std::vector<Pose>& linkPoses = *poses;
   thread_local std::vector<PairBound> pairs;
   // Every pair: each has its own weight, so no one distance limit culls them here.
   const double slack = broadPhase(linkPoses, std::numeric_limits<double>::infinity(), pairs);
@@ -324,28 +329,33 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
 bool ArmValidityCheckerBase::isValid(const ompl::base::State* state) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::validity);
   if (!si_->satisfiesBounds(state)) return false;
-  return separatedAbove(posesFor(state), safetyMargin_);
+  const std::vector<Pose>* poses = posesFor(state);
+  return poses != nullptr && separatedAbove(*poses, safetyMargin_);
 }
 
 bool ArmValidityCheckerBase::isValid(const ompl::base::State* state, double& dist) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  dist = distanceUpTo(posesFor(state), std::numeric_limits<double>::infinity());
+  const std::vector<Pose>* poses = posesFor(state);
+  dist = poses != nullptr ? distanceUpTo(*poses, std::numeric_limits<double>::infinity()) : 0.0;
   return si_->satisfiesBounds(state) && dist > safetyMargin_;
 }
 
 double ArmValidityCheckerBase::clearance(const ompl::base::State* state) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  return distanceUpTo(posesFor(state), std::numeric_limits<double>::infinity());
+  const std::vector<Pose>* poses = posesFor(state);
+  return poses != nullptr ? distanceUpTo(*poses, std::numeric_limits<double>::infinity()) : 0.0;
 }
 
 double ArmValidityCheckerBase::clearanceUpTo(const ompl::base::State* state, double cap) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  return distanceUpTo(posesFor(state), cap);
+  const std::vector<Pose>* poses = posesFor(state);
+  return poses != nullptr ? distanceUpTo(*poses, cap) : 0.0;
 }
 
 double ArmValidityCheckerBase::obstacleClearanceUpTo(const ompl::base::State* state, double cap) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  return distanceUpTo(posesFor(state), cap, true);
+  const std::vector<Pose>* poses = posesFor(state);
+  return poses != nullptr ? distanceUpTo(*poses, cap, true) : 0.0;
 }
 
 }  // namespace adsd::planner

@@ -132,23 +132,33 @@ double RigidBodyValidityChecker::distanceUpTo(const Pose& robotPose, double cap)
 bool RigidBodyValidityChecker::isValid(const ompl::base::State* state) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::validity);
   if (!si_->satisfiesBounds(state)) return false;
-  return separatedAbove(poseFromState(state, scene_->space), safetyMargin_);
+  const Pose pose = poseFromState(state, scene_->space);
+  return pose.matrix().allFinite() && separatedAbove(pose, safetyMargin_);
 }
 
 bool RigidBodyValidityChecker::isValid(const ompl::base::State* state, double& dist) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  dist = distanceUpTo(poseFromState(state, scene_->space), std::numeric_limits<double>::infinity());
+  dist = clearanceOf(state, std::numeric_limits<double>::infinity());
   return si_->satisfiesBounds(state) && dist > safetyMargin_;
 }
 
 double RigidBodyValidityChecker::clearance(const ompl::base::State* state) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  return distanceUpTo(poseFromState(state, scene_->space), std::numeric_limits<double>::infinity());
+  return clearanceOf(state, std::numeric_limits<double>::infinity());
 }
 
 double RigidBodyValidityChecker::clearanceUpTo(const ompl::base::State* state, double cap) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
-  return distanceUpTo(poseFromState(state, scene_->space), cap);
+  return clearanceOf(state, cap);
+}
+
+double RigidBodyValidityChecker::clearanceOf(const ompl::base::State* state, double cap) const {
+  // A NaN position passes OMPL's bounds test (its comparisons are false), and the distance query
+  // refuses the pose it makes with an exception thrown into the planner: such a state is invalid,
+  // at clearance 0, as one with a NaN yaw already was (SO(2)'s bounds test fails for it).
+  const Pose pose = poseFromState(state, scene_->space);
+  if (!pose.matrix().allFinite()) return 0.0;
+  return distanceUpTo(pose, cap);
 }
 
 }  // namespace adsd::planner

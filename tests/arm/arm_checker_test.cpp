@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <ompl/base/ScopedState.h>
@@ -58,6 +60,27 @@ TEST(ArmValidityChecker, SmallArmClearanceAsWorkedOutByHand) {
   EXPECT_FALSE(careful->isValid(s.get()));
   EXPECT_THROW(ArmValidityChecker(si, scene, -1.0), InputError);
   EXPECT_THROW(ArmValidityChecker(si, scene, 0.0, DistanceOptions::aboveThreshold(0.1)), InputError);
+}
+
+// A NaN joint value passes OMPL's bounds test for a revolute joint; the checker threw the distance
+// query's InputError into the planner for it. It is invalid, at clearance 0.
+TEST(ArmValidityChecker, JointValuesThatAreNotNumbersAreInvalidAtClearanceZero) {
+  const ArmScene scene = test::sliderScene(0.55);
+  auto si = spaceFor(*scene.model);
+  auto checker = std::make_shared<ArmValidityChecker>(si, scene);
+  si->setStateValidityChecker(checker);
+  si->setup();
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& q : {std::array<double, 2>{nan, 0.0}, std::array<double, 2>{0.0, nan}}) {
+    si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q.data(), s.get());
+    double dist = 1.0;
+    EXPECT_NO_THROW(EXPECT_FALSE(checker->isValid(s.get())));
+    EXPECT_NO_THROW(EXPECT_FALSE(checker->isValid(s.get(), dist)));
+    EXPECT_EQ(dist, 0.0);
+    EXPECT_NO_THROW(EXPECT_EQ(checker->clearance(s.get()), 0.0));
+    EXPECT_NO_THROW(EXPECT_EQ(checker->obstacleClearanceUpTo(s.get(), 1.0), 0.0));
+  }
 }
 
 // The message of a start or goal in collision names the pairs in contact (arm_planning_problem.cpp).

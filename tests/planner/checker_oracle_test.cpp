@@ -365,5 +365,35 @@ TEST(CheckerSettings, OutOfBoundsStatesAreInvalid) {
   EXPECT_FALSE(checker.isValid(s.get(), dist));
 }
 
+// A NaN position passes OMPL's bounds test (its comparisons are false); the checker threw the
+// distance query's InputError into the planner for it, while a NaN yaw was simply invalid.
+TEST(CheckerSettings, StatesThatAreNotNumbersAreInvalidAtClearanceZero) {
+  const SceneFixture plane = test::thinWallFixture();
+  MeshValidityChecker flat(plane.si, plane.scene);
+  ompl::base::ScopedState<ompl::base::SE2StateSpace> s(plane.si);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Vec3& xyYaw : {Vec3(nan, -3.0, 0.0), Vec3(-3.0, nan, 0.0), Vec3(-3.0, -3.0, nan)}) {
+    s->setXY(xyYaw.x(), xyYaw.y());
+    s->setYaw(xyYaw.z());
+    double dist = 1.0;
+    EXPECT_NO_THROW(EXPECT_FALSE(flat.isValid(s.get())));
+    EXPECT_NO_THROW(EXPECT_FALSE(flat.isValid(s.get(), dist)));
+    EXPECT_EQ(dist, 0.0);
+    EXPECT_NO_THROW(EXPECT_EQ(flat.clearance(s.get()), 0.0));
+    EXPECT_NO_THROW(EXPECT_EQ(flat.clearanceUpTo(s.get(), 1.0), 0.0));
+  }
+  const SceneFixture space = test::bugTrapFixture();
+  MeshValidityChecker solid(space.si, space.scene);
+  ompl::base::ScopedState<ompl::base::SE3StateSpace> t(space.si);
+  t->setXYZ(nan, 0.0, 0.0);
+  t->rotation().setIdentity();
+  EXPECT_NO_THROW(EXPECT_FALSE(solid.isValid(t.get())));
+  EXPECT_NO_THROW(EXPECT_EQ(solid.clearance(t.get()), 0.0));
+  t->setXYZ(0.0, 0.0, 0.0);
+  t->rotation().x = nan;
+  EXPECT_NO_THROW(EXPECT_FALSE(solid.isValid(t.get())));
+  EXPECT_NO_THROW(EXPECT_EQ(solid.clearance(t.get()), 0.0));
+}
+
 }  // namespace
 }  // namespace adsd::planner

@@ -14,6 +14,7 @@
 #include "adsd/error.h"
 #include "adsd/tolerances.h"
 #include "oracle.h"
+#include "random_geometry.h"
 
 namespace adsd {
 namespace {
@@ -91,6 +92,43 @@ TEST(InputBoundary, NonRigidPosesAreRefused) {
   far.translation() = Vec3(0, 0, -1e100);
   message = refusal(query(far));
   EXPECT_NE(message.find("translation entry of 1e+100"), std::string::npos) << message;
+}
+
+TEST(InputBoundary, ModeOutsideTheEnumIsRefused) {
+  const Mesh a = triangleAt(0.0), b = triangleAt(3.0);
+  DistanceOptions options;
+  options.mode = static_cast<QueryMode>(42);  // ran as an exact query before, unasked
+  EXPECT_EQ(refusal([&] { distance(a, Pose::Identity(), b, Pose::Identity(), options); }),
+            "distance query: mode 42 is none of exact, tolerance, threshold and cap");
+}
+
+// A mirror image is an isometry: the distance is the mirrored meshes', on both query paths.
+TEST(InputBoundary, MirrorPosesAreMeasuredAsIsometries) {
+  oracle::SeededRandom random(77);
+  auto randomMesh = [&random](double shift) {
+    std::vector<Vec3> vertices;
+    std::vector<TriangleIndices> triangles;
+    for (std::uint32_t t = 0; t < 30; ++t) {
+      for (int k = 0; k < 3; ++k) vertices.push_back(random.inCube(0.5) + Vec3(shift, 0, 0));
+      triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+    }
+    return Mesh(vertices, triangles);
+  };
+  Mesh a = randomMesh(0.0), b = randomMesh(1.2);
+  for (int round = 0; round < 2; ++round) {
+    for (int k = 0; k < 20; ++k) {
+      Pose mirror(Eigen::Quaterniond(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1),
+                                     random.uniform(-1, 1)).normalized());
+      mirror.matrix().col(static_cast<Eigen::Index>(k % 3)) *= -1.0;  // determinant -1
+      mirror.translation() = random.inCube(1.0);
+      ASSERT_LT(mirror.linear().determinant(), 0.0);
+      const DistanceResult r = distance(a, mirror, b, Pose::Identity());
+      const double expected = static_cast<double>(oracle::meshDistance(a, mirror, b, Pose::Identity()).value);
+      EXPECT_NEAR(r.distance, expected, 1e-12) << "pose " << k << (round == 1 ? ", trees" : ", from scratch");
+    }
+    a.buildHierarchy();
+    b.buildHierarchy();
+  }
 }
 
 TEST(InputBoundary, RigidPosesBuiltInDoubleAreAccepted) {

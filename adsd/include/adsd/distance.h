@@ -143,10 +143,11 @@ class DistanceScratch {
 /// \brief Minimum distance between mesh \p a placed by \p poseA and mesh \p b placed by \p poseB.
 ///
 /// Thread-safe for concurrent calls on the same meshes with distinct scratch objects. Throws
-/// InputError for invalid options (negative tolerance, non-finite threshold, non-positive cap) or
-/// a pose that is not rigid (non-finite entries, a rotation part not orthonormal within
-/// tolerance::kPoseOrthonormality, a bottom row other than 0 0 0 1) or whose translation exceeds
-/// tolerance::kMaxCoordinate.
+/// InputError for invalid options (a mode outside QueryMode, negative tolerance, non-finite
+/// threshold, non-positive cap) or a pose that is not rigid (non-finite entries, a rotation part
+/// not orthonormal within tolerance::kPoseOrthonormality, a bottom row other than 0 0 0 1) or
+/// whose translation exceeds tolerance::kMaxCoordinate. An orthonormal part of determinant -1 (a
+/// mirror image, the left part made from the right one's mesh) is an isometry too, and is taken.
 DistanceResult distance(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
                         const DistanceOptions& options, DistanceScratch& scratch);
 

@@ -51,6 +51,7 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// \brief \p dist is clearance(state); valid when within bounds and dist > safetyMargin().
   bool isValid(const ompl::base::State* state, double& dist) const final;
   /// \brief The smallest distance over the checked pairs (link–obstacle and enabled link–link).
+  /// \brief A state with a joint value that is not finite (NaN) is invalid, at clearance 0.
   double clearance(const ompl::base::State* state) const final;
   /// \brief A lower bound on clearance(state) that equals it when below \p cap and is at least
   /// min(clearance, cap) otherwise. Counted as a clearance query.
@@ -112,8 +113,12 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
     double lower;
     std::size_t a, b;
   };
-  /// Joint vector and link poses for the state, in the calling thread's scratch.
-  const std::vector<Pose>& posesFor(const ompl::base::State* state) const;
+  /// Joint vector and link poses for the state, in the calling thread's scratch; null when a
+  /// joint value is not finite. A NaN passes OMPL's bounds test for a revolute or prismatic joint
+  /// (its comparisons are false), and the distance query refuses the poses it makes by throwing
+  /// into the planner: such a state is invalid, at clearance 0 (a NaN continuous joint already
+  /// failed SO(2)'s bounds test).
+  const std::vector<Pose>* posesFor(const ompl::base::State* state) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
   /// The smallest distance over the checked pairs (the link pairs left out when \p obstaclesOnly).

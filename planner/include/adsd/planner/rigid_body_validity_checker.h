@@ -42,7 +42,8 @@ class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
   /// valid when it is within bounds and dist > safetyMargin().
   bool isValid(const ompl::base::State* state, double& dist) const final;
   /// \brief The distance between robot and environment (exact, or a lower bound when the
-  /// subclass says so in specs_.clearanceComputationType).
+  /// subclass says so in specs_.clearanceComputationType). A state whose pose is not finite (a
+  /// NaN coordinate) is invalid, at clearance 0.
   double clearance(const ompl::base::State* state) const final;
 
   /// \brief A lower bound on the distance at \p state that equals clearance(state) when that is
@@ -90,6 +91,8 @@ class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
   double broadPhase(const Pose& robotPose, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const Pose& robotPose, double margin) const;
   double distanceUpTo(const Pose& robotPose, double cap) const;
+  /// distanceUpTo at the state's pose, 0 for a pose that is not finite.
+  double clearanceOf(const ompl::base::State* state, double cap) const;
 
   double safetyMargin_;
   double robotRadius_;
