@@ -44,6 +44,15 @@ foreach(f IN LISTS installed)
   endforeach()
 endforeach()
 file(REMOVE "${WORK_DIR}/without-debug")
+# The exported targets name their dependencies by target, found again on the user's machine, never
+# by a library file of the build machine (libtinyxml.so was one: a copied prefix needed that file).
+file(GLOB exported "${WORK_DIR}/prefix/lib*/cmake/adsd/adsdTargets.cmake")
+foreach(f IN LISTS exported)
+  file(STRINGS "${f}" hits REGEX "INTERFACE_LINK_LIBRARIES.*/[^;\"]*\\.(so|a)[;\">]")
+  if(hits)
+    message(FATAL_ERROR "${f} links a library by its path: ${hits}")
+  endif()
+endforeach()
 
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/build"
                         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release
