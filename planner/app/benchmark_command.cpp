@@ -767,11 +767,21 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
   }
 
   const auto [directory, stem] = outputNames(a, input);
+  // Named where it came from: --out, or the problem file's `output` line.
+  const std::string source = a.outDirectory || !input.outputLocation ? "--out" : input.outputLocation->describe();
   std::error_code error;
-  fs::create_directories(directory, error);
+  // The directory itself is made, as mkdir makes it, but not a missing parent: a mistyped name
+  // (--out /nonexistent/dir) made a tree at the root and filled it.
+  fs::path whole = fs::absolute(directory, error).lexically_normal();
+  if (!whole.has_filename()) whole = whole.parent_path();  // "results/"
+  const fs::path parent = whole.parent_path();
+  if (!error && !fs::exists(directory, error) && !fs::is_directory(parent, error)) {
+    throw InputError(source + ": cannot make directory '" + directory.string() + "': directory '" + parent.string() +
+                     "' does not exist");
+  }
+  error.clear();
+  fs::create_directory(directory, error);
   if (error || !fs::is_directory(directory) || ::access(directory.c_str(), W_OK) != 0) {
-    // Named where it came from: --out, or the problem file's `output` line.
-    const std::string source = a.outDirectory || !input.outputLocation ? "--out" : input.outputLocation->describe();
     throw InputError(source + ": cannot write in directory '" + directory.string() + "'" +
                      (error ? ": " + error.message() : std::string(" (not a writable directory)")));
   }

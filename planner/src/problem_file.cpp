@@ -560,6 +560,12 @@ void readPlannerSection(const std::vector<Entry>& entries, const std::string& so
         ignored.insert(name);
         continue;
       }
+      // OMPL.app's planner lines are `rrtconnect =`: a value there is no parameter of anything
+      // (parameters are `rrtconnect.range = 2`), and silently dropping it hid the mistake.
+      if (!e.value.empty()) {
+        file.warnings.push_back(locate(source, e).describe() + ": a planner line takes no value ('" + name +
+                                " =', parameters as '" + name + ".range = ...'); '" + e.value + "' ignored");
+      }
       PlannerEntry planner;
       planner.name = name;
       planner.label = name;

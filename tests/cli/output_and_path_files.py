@@ -12,7 +12,7 @@ stdout (no plan was made first). `adsd view` of a rigid problem's path file: a y
 [-pi, pi] (as tools that write [0, 2 pi) or unwrapped angles give it) and a comment after a
 state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
 no page is written. A start in collision is refused by `adsd plan` and shown, with a warning
-naming its line, by `adsd view`.
+naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory.
 """
 import math
 import os
@@ -105,6 +105,14 @@ def main():
         expect_refused(adsd, ["view", office, "--path", outside, "--html", page], work,
                        f"adsd view: error: {outside}:2: the state lies outside the problem's bounds (x in [-10, 10]")
         check(not os.path.exists(page), "view of a state outside the bounds wrote a page")
+
+        # `adsd benchmark --out` makes its directory, but not a missing parent: a mistyped name
+        # made a tree and filled it.
+        nested = os.path.join(work, "no_such_parent", "results")
+        expect_refused(adsd, ["benchmark", office, "--runs", "1", "--time", "1", "--out", nested], work,
+                       f"adsd benchmark: error: --out: cannot make directory '{nested}': directory "
+                       f"'{os.path.dirname(nested)}' does not exist")
+        check(not os.path.exists(os.path.dirname(nested)), "benchmark --out made a missing parent")
 
         # A start in collision (x = -9.95: the robot in the office's outer wall): `adsd plan`
         # refuses it, `adsd view` shows it with a warning naming the line.

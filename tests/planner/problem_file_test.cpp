@@ -157,6 +157,19 @@ TEST(ProblemFile, UnknownKeysAndSectionsWarnWithTheirLine) {
   EXPECT_NE(p.warnings[1].find(":22: key 'benchmark.flavour'"), std::string::npos) << p.warnings[1];
 }
 
+// `rrtconnect = yes`: OMPL.app's planner lines take no value; the value was dropped unsaid.
+TEST(ProblemFile, APlannerLineWithAValueWarnsWithItsLine) {
+  ScratchDir dir;
+  const std::string text = std::string(kSe3Start) + "\n[planner]\nrrtconnect = yes\nprm =\n";
+  const ProblemFile p = readProblemFile(dir.write("v.cfg", text));
+  ASSERT_EQ(p.planners.size(), 2u);
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_NE(p.warnings[0].find(":20: key 'planner.rrtconnect': a planner line takes no value ('rrtconnect =', "
+                               "parameters as 'rrtconnect.range = ...'); 'yes' ignored"),
+            std::string::npos)
+      << p.warnings[0];
+}
+
 // ---- issue 7's catalogue, the cfg part -------------------------------------------------------
 
 TEST(ProblemFileErrors, MissingFile) {
