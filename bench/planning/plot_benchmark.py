@@ -5,7 +5,8 @@ writes from `adsd benchmark`'s logs, one log or many merged).
 usage: plot_benchmark.py DB [--out DIR] [--prefix STEM] [--no-plots]
 
 Prints a Markdown summary per problem and planner configuration (runs, solved, median solve time,
-median solution clearance, our query counters) and the FCL / adsd ratios, and writes it to
+median solution clearance: OMPL's, the mean of the clearance at the path's states, not their
+minimum, our query counters) and the FCL / adsd ratios, and writes it to
 DIR/STEM.summary.md. Unless --no-plots, draws from the same rows:
   DIR/STEM.time.png       solve time per planner, checker and motion validator (all runs)
   DIR/STEM.clearance.png  solution clearance of the solved runs (after simplification when the
@@ -134,7 +135,7 @@ def summary(groups):
     for problem in dict.fromkeys(g.problem for g in groups):
         members = [g for g in groups if g.problem == problem]
         lines += ["## %s" % problem, "",
-                  "| planner | checker | motion | runs | solved | median time (s) | median clearance | "
+                  "| planner | checker | motion | runs | solved | median time (s) | median clearance (mean over the path's states) | "
                   "median validity checks | mean validity check (µs) | median clearance queries | "
                   "mean clearance query (µs) | median query time fraction |",
                   "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
@@ -164,7 +165,11 @@ def summary(groups):
                     fmt(ratio(theirs.pooled_mean("clearance_query_time", "clearance_queries"),
                               ours.pooled_mean("clearance_query_time", "clearance_queries")))))
         if ratios:
-            lines += ["FCL ÷ adsd in this benchmark (above 1: adsd faster):", "",
+            lines += ["FCL ÷ adsd in this benchmark (above 1: adsd faster). The runs are not paired: each "
+                      "checker's runs draw their own samples, so the median times differ by the draws as well "
+                      "as by the checkers; the per-query means compare like with like. Paired runs: one "
+                      "process per run and seed (`--runs 1 --seed S`, as bench/planning/solve_time_ratios.py "
+                      "runs them).", "",
                       "| planner | motion | median time | mean validity check | mean clearance query |",
                       "|---|---|---:|---:|---:|"] + ratios + [""]
     return "\n".join(lines)
@@ -237,7 +242,7 @@ def plot(groups, out_dir, prefix):
            "time", "solve time (s), all runs")
     figure(lambda ax, m: boxes(ax, m, lambda g: g.values(g.clearance_column(), solved_only=True),
                                lambda g: "%d solved" % g.solved()),
-           "clearance", "solution clearance (solved runs)")
+           "clearance", "solution clearance, mean over the path's states (solved runs)")
 
     def query_bars(ax, members):
         from matplotlib.patches import Patch

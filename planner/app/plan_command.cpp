@@ -243,8 +243,8 @@ bool simplifies(const PlanArguments& a, ObjectiveKind objective) {
 /// finger), can step over it: OMPL then reports a solution that the summary's finer measure finds
 /// in contact. Said, instead of exit status 0 under "solved yes" (the path and page are written, to
 /// look at it).
-int reportContact(const PathMeasures& measures, double safetyMargin, const ompl::base::SpaceInformation& si) {
-  if (!(measures.minClearance <= safetyMargin)) return 0;
+int reportContact(double leastClearance, double safetyMargin, const ompl::base::SpaceInformation& si) {
+  if (!(leastClearance <= safetyMargin)) return 0;
   std::printf("contact     the path comes within the safety margin (%g) at a measured state: the discrete motion "
               "validator checks states %g apart and stepped over it; --motion certified proves every motion\n",
               safetyMargin, si.getStateValidityCheckingResolution() * si.getMaximumExtent());
@@ -345,7 +345,7 @@ int planArm(const PlanArguments& a) {
     writeArmViewerHtml(*a.htmlFile, problem, &path, "adsd plan, planner " + plannerName);
     std::printf("viewer      %s\n", a.htmlFile->c_str());
   }
-  return reportContact(measures, problem.checker()->safetyMargin(), *problem.spaceInformation());
+  return reportContact(measures.minClearance, problem.checker()->safetyMargin(), *problem.spaceInformation());
 }
 
 int plan(const std::vector<std::string>& args) {
@@ -394,6 +394,12 @@ int plan(const std::vector<std::string>& args) {
   std::printf("path        %zu states, length %.6g\n", path.getStateCount(), measures.length);
   std::printf("clearance   min %.6g, mean %.6g (over %zu states at the validity-checking resolution)\n",
               measures.minClearance, measures.meanClearance, measures.statesSampled);
+  // Between those states too: a motion can pass nearer an edge than either end of its step, or,
+  // checked discretely, step over a thin obstacle.
+  const PathLeastClearance along = leastClearanceAlong(path, *problem.checker());
+  std::printf("along       min %.6g between the states too (no state of the motions nearer than %.6g; %zu "
+              "clearance queries)\n",
+              along.least, along.lowerBound, along.queries);
   if (a.pathFile) {
     writePathFile(*a.pathFile, path, file.space);
     std::printf("path file   %s\n", a.pathFile->c_str());
@@ -402,7 +408,7 @@ int plan(const std::vector<std::string>& args) {
     writeViewerHtml(*a.htmlFile, file, problem, &path, "adsd plan, planner " + plannerName);
     std::printf("viewer      %s\n", a.htmlFile->c_str());
   }
-  return reportContact(measures, problem.checker()->safetyMargin(), *problem.spaceInformation());
+  return reportContact(along.least, problem.checker()->safetyMargin(), *problem.spaceInformation());
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include "adsd/error.h"
 #include "adsd/planner/arm_planning_problem.h"
 #include "adsd/planner/arm_state_space.h"
+#include "adsd/planner/path_report.h"
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
@@ -286,6 +287,12 @@ int view(const std::vector<std::string>& args) {
               a->problem.c_str());
   std::printf("clearance   min %.6g (over %zu states%s)\n", s.minClearance, s.states,
               path ? " at the validity-checking resolution" : ": the start and the goal");
+  if (path) {  // as `adsd plan` prints it: between the states too
+    const PathLeastClearance along = leastClearanceAlong(*path, *problem.checker());
+    std::printf("along       min %.6g between the states too (no state of the motions nearer than %.6g; %zu "
+                "clearance queries)\n",
+                along.least, along.lowerBound, along.queries);
+  }
   std::printf("viewer      %s (%.0f kB)\n", a->html.c_str(), static_cast<double>(s.bytes) / 1000.0);
   return 0;
 }

@@ -14,6 +14,8 @@
 #include <ompl/base/spaces/SE3StateSpace.h>
 
 #include "adsd/error.h"
+#include "adsd/planner/certified_motion_validator.h"
+#include "adsd/planner/state_pose.h"
 
 namespace adsd::planner {
 
@@ -38,6 +40,69 @@ PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ob::S
     m.meanClearance = sum / static_cast<double>(m.statesSampled);
   }
   return m;
+}
+
+PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& path,
+                                       const RigidBodyValidityChecker& checker, double relativeTolerance,
+                                       std::size_t maxQueries) {
+  PathLeastClearance r;
+  const ob::SpaceInformationPtr& si = path.getSpaceInformation();
+  const RigidBodySpace space = checker.space();
+  // What a distance is trusted to (kDistanceTrustFraction): every bound gives it away.
+  const double trust = kDistanceTrustFraction * checker.scale();
+  struct Interval {
+    std::size_t motion;
+    double t0, t1, c0, c1, lower;
+  };
+  const auto later = [](const Interval& x, const Interval& y) { return x.lower > y.lower; };
+  std::vector<Interval> heap;
+  std::vector<double> sweep(path.getStateCount(), 0.0);
+  ob::State* state = si->allocState();
+  const auto clearanceAt = [&](std::size_t motion, double t) {
+    si->getStateSpace()->interpolate(path.getState(motion), path.getState(motion + 1), t, state);
+    ++r.queries;
+    const double c = checker.clearance(state);
+    r.least = std::min(r.least, c);
+    return c;
+  };
+  const auto push = [&](std::size_t motion, double t0, double t1, double c0, double c1) {
+    const double lower = 0.5 * (c0 + c1 - sweep[motion] * (t1 - t0)) - trust;
+    heap.push_back({motion, t0, t1, c0, c1, std::max(lower, 0.0)});
+    std::push_heap(heap.begin(), heap.end(), later);
+  };
+  r.least = std::numeric_limits<double>::infinity();
+  if (path.getStateCount() == 1) {
+    r.least = checker.clearance(path.getState(0));
+    r.queries = 1;
+  }
+  for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k) {
+    const ob::State *from = path.getState(k), *to = path.getState(k + 1);
+    sweep[k] = translationDistance(from, to, space) + rotationAngle(from, to, space) * checker.robotRadius();
+    // As measurePath samples it: the motion cut at the validity-checking resolution.
+    const unsigned pieces = std::max(1u, si->getStateSpace()->validSegmentCount(from, to));
+    double t = 0.0, c = clearanceAt(k, 0.0);
+    for (unsigned i = 1; i <= pieces; ++i) {
+      const double next = static_cast<double>(i) / pieces;
+      const double cNext = clearanceAt(k, next);
+      push(k, t, next, c, cNext);
+      t = next;
+      c = cNext;
+    }
+  }
+  while (!heap.empty()) {
+    const Interval worst = heap.front();
+    if (worst.lower >= r.least * (1.0 - relativeTolerance) - trust || r.queries >= maxQueries) break;
+    std::pop_heap(heap.begin(), heap.end(), later);
+    heap.pop_back();
+    const double middle = 0.5 * (worst.t0 + worst.t1);
+    if (!(middle > worst.t0 && middle < worst.t1)) continue;  // as fine as doubles go: its ends decide it
+    const double c = clearanceAt(worst.motion, middle);
+    push(worst.motion, worst.t0, middle, worst.c0, c);
+    push(worst.motion, middle, worst.t1, c, worst.c1);
+  }
+  si->freeState(state);
+  r.lowerBound = heap.empty() ? r.least : std::min(r.least, heap.front().lower);
+  return r;
 }
 
 ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& path,

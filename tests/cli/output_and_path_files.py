@@ -12,7 +12,8 @@ stdout (no plan was made first). `adsd view` of a rigid problem's path file: a y
 [-pi, pi] (as tools that write [0, 2 pi) or unwrapped angles give it) and a comment after a
 state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
 no page is written. A start in collision is refused by `adsd plan` and shown, with a warning
-naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory.
+naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory. `adsd plan`'s least clearance
+along the path, between its states too, finds where a discrete path steps over the thin wall.
 """
 import math
 import os
@@ -113,6 +114,18 @@ def main():
                        f"adsd benchmark: error: --out: cannot make directory '{nested}': directory "
                        f"'{os.path.dirname(nested)}' does not exist")
         check(not os.path.exists(os.path.dirname(nested)), "benchmark --out made a missing parent")
+
+        # The thin wall, planned with the discrete validator: RRTConnect's path steps over the wall
+        # (its states at the resolution are clear), and the `along` line, which measures between
+        # them too, finds it at 0: a contact line and exit 1. Certified motions go round.
+        thin = os.path.join(os.path.dirname(os.path.abspath(office)), "thin_wall.cfg")
+        r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect"], work)
+        check(r.returncode == 1 and "\nalong       min 0 between the states" in r.stdout and "\ncontact     " in r.stdout,
+              f"plan thin_wall.cfg, discrete: exit {r.returncode}, stdout {r.stdout!r}")
+        r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect", "--motion", "certified"],
+                work)
+        check(r.returncode == 0 and "\nalong       min 0." in r.stdout and "contact" not in r.stdout,
+              f"plan thin_wall.cfg, certified: exit {r.returncode}, stdout {r.stdout!r}")
 
         # A start in collision (x = -9.95: the robot in the office's outer wall): `adsd plan`
         # refuses it, `adsd view` shows it with a warning naming the line.
