@@ -89,7 +89,8 @@ Vec3 closestOnFace(const Vec3& p, const Face& f) {
       // a box 5e-17 thick, and the edges answered 2e-6 too far (fandisk, a CAD mesh full of such
       // faces). A sliver's false "inside" leaves the box by far more than this.
       const double footSlack = tolerance::kContactSnapUlps * kEpsilon * r.cwiseAbs().maxCoeff();
-      if ((foot.array() >= f.boxLow.array() - footSlack).all() && (foot.array() <= f.boxHigh.array() + footSlack).all()) {
+      if ((foot.array() >= f.boxLow.array() - footSlack).all() &&
+          (foot.array() <= f.boxHigh.array() + footSlack).all()) {
         return foot + f.origin;
       }
     }

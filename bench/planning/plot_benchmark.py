@@ -135,7 +135,8 @@ def summary(groups):
     for problem in dict.fromkeys(g.problem for g in groups):
         members = [g for g in groups if g.problem == problem]
         lines += ["## %s" % problem, "",
-                  "| planner | checker | motion | runs | solved | median time (s) | median clearance (mean over the path's states) | "
+                  "| planner | checker | motion | runs | solved | median time (s) | "
+                  "median clearance (mean over the path's states) | "
                   "median validity checks | mean validity check (µs) | median clearance queries | "
                   "mean clearance query (µs) | median query time fraction |",
                   "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]

@@ -75,7 +75,10 @@ const std::vector<std::pair<std::string, Allocator>>& registry() {
       {"sbl", allocator<og::SBL>()},
       {"stride", allocator<og::STRIDE>()},
       {"pdst", allocator<og::PDST>()},
-      {"bitstar", allocator<og::BITstar>()},
+      // Named as OMPL renames its k-nearest BIT* (its default), warning on every construction
+      // that "BITstar" is reserved for the r-disc version.
+      {"bitstar",
+       [](const ompl::base::SpaceInformationPtr& si) { return std::make_shared<og::BITstar>(si, "kBITstar"); }},
       {"fmt", allocator<og::FMT>()},
       {"bfmt", allocator<og::BFMT>()},
       {"sst", allocator<og::SST>()},

@@ -12,8 +12,9 @@ stdout (no plan was made first). `adsd view` of a rigid problem's path file: a y
 [-pi, pi] (as tools that write [0, 2 pi) or unwrapped angles give it) and a comment after a
 state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
 no page is written. A start in collision is refused by `adsd plan` and shown, with a warning
-naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory. `adsd plan`'s least clearance
-along the path, between its states too, finds where a discrete path steps over the thin wall.
+naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory.
+`adsd plan`'s least clearance along the path, between its states too, finds where a discrete path
+steps over the thin wall.
 """
 import math
 import os
@@ -120,7 +121,8 @@ def main():
         # them too, finds it at 0: a contact line and exit 1. Certified motions go round.
         thin = os.path.join(os.path.dirname(os.path.abspath(office)), "thin_wall.cfg")
         r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect"], work)
-        check(r.returncode == 1 and "\nalong       min 0 between the states" in r.stdout and "\ncontact     " in r.stdout,
+        check(r.returncode == 1 and "\nalong       min 0 between the states" in r.stdout
+              and "\ncontact     " in r.stdout,
               f"plan thin_wall.cfg, discrete: exit {r.returncode}, stdout {r.stdout!r}")
         r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect", "--motion", "certified"],
                 work)

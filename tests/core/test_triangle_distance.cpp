@@ -554,7 +554,8 @@ TEST(TriangleDistanceRandom, AgainstOracle) {
     TrianglePair c;
     for (Vec3& v : c.a) v = Vec3(r.uniform(-size, size), r.uniform(-size, size), level);
     const Vec3 centroid = (c.a[0] + c.a[1] + c.a[2]) / 3.0;
-    const Vec3 tip = centroid + Vec3(r.uniform(-0.3, 0.3) * size, r.uniform(-0.3, 0.3) * size, size * r.logUniform(1.3, 3.3));
+    const Vec3 tip =
+        centroid + Vec3(r.uniform(-0.3, 0.3) * size, r.uniform(-0.3, 0.3) * size, size * r.logUniform(1.3, 3.3));
     c.b = {tip, tip + r.uniform(0.1, 1) * size * Vec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.2, 1)),
            tip + r.uniform(0.1, 1) * size * Vec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(0.2, 1))};
     return shuffleAxes(c, r);

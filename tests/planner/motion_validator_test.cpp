@@ -210,8 +210,9 @@ TEST(LeastClearanceAlong, FindsTheWallADiscretePathStepsOverAndTheLeastOverTheTo
   f.si->getStateSpace()->interpolate(left.get(), right.get(), denseAt, s.get());
   double oracle = std::numeric_limits<double>::infinity();
   for (const Mesh& e : f.oracleEnvironment) {
-    oracle = std::min(oracle, static_cast<double>(oracle::meshDistance(f.scene->robot[0], poseFromState(s.get(), f.scene->space),
-                                                                      e, Pose::Identity()).value));
+    const Pose pose = poseFromState(s.get(), f.scene->space);
+    const auto brute = oracle::meshDistance(f.scene->robot[0], pose, e, Pose::Identity());
+    oracle = std::min(oracle, static_cast<double>(brute.value));
   }
   ASSERT_NEAR(dense, oracle, 1e-9) << "the dense samples' least, by the brute force";
   ASSERT_GT(dense, 0.0);
