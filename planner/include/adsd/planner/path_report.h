@@ -28,6 +28,9 @@ struct PathMeasures {
 /// Any checker with a clearance: RigidBodyValidityChecker, ArmValidityCheckerBase.
 PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ompl::base::StateValidityChecker& checker);
 
+/// leastClearanceAlong's absolute tolerance, a fraction of the scene's length scale (dimensionless).
+inline constexpr double kAbsoluteToleranceFraction = 1e-6;
+
 /// \brief The least clearance along a rigid body's path, its motions included.
 struct PathLeastClearance {
   double least = 0.0;       ///< the least clearance found, at a state of the path (exact)
@@ -41,11 +44,11 @@ struct PathLeastClearance {
 /// at most L |t' - t| (L as CertifiedMotionValidator's), so the clearance between states measured
 /// at t and t' is at least (c + c' - L |t' - t|) / 2; the interval of the smallest such bound is
 /// halved, by one query at its middle, until that bound is within \p relativeTolerance of the least
-/// found (or \p maxQueries are spent: lowerBound says what was proven). Starts from the states
-/// measurePath measures.
+/// found, or kAbsoluteToleranceFraction of the scene's scale (or \p maxQueries are spent:
+/// lowerBound says what was proven). Starts from the states measurePath measures.
 PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& path,
                                        const RigidBodyValidityChecker& checker, double relativeTolerance = 0.01,
-                                       std::size_t maxQueries = 100000);
+                                       std::size_t maxQueries = 20000);
 
 /// \brief An arm path's clearance as the clearance objective measures it (ArmMotionClearance).
 struct ArmPathClearance {
