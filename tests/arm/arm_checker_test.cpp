@@ -28,15 +28,25 @@ ompl::base::SpaceInformationPtr spaceFor(const ArmModel& model) {
   return si;
 }
 
+/// The small arm with the box's face at y = 0.55 (test::sliderScene), its space set up with our checker.
+struct SmallArm {
+  ArmScene scene = test::sliderScene(0.55);
+  ompl::base::SpaceInformationPtr si = spaceFor(*scene.model);
+  std::shared_ptr<ArmValidityChecker> checker = std::make_shared<ArmValidityChecker>(si, scene);
+  SmallArm() {
+    si->setStateValidityChecker(checker);
+    si->setup();
+  }
+};
+
 // turn = 0: the tip sphere (radius 0.03, its mesh at most 1 % larger) reaches y = 0.53, the box's
 // face is at y = 0.55: clearance 0.02 less at most 0.0003; everything else is farther (the arm's
 // box ends at y = 0.5, 0.05 away; base to arm: 0.1 vertically).
 TEST(ArmValidityChecker, SmallArmClearanceAsWorkedOutByHand) {
-  const ArmScene scene = test::sliderScene(0.55);
-  auto si = spaceFor(*scene.model);
-  auto checker = std::make_shared<ArmValidityChecker>(si, scene);
-  si->setStateValidityChecker(checker);
-  si->setup();
+  const SmallArm arm;
+  const ArmScene& scene = arm.scene;
+  const ompl::base::SpaceInformationPtr& si = arm.si;
+  const std::shared_ptr<ArmValidityChecker>& checker = arm.checker;
   ompl::base::ScopedState<> s(si->getStateSpace());
   const double q[2] = {0.0, 0.0};
   si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
@@ -65,11 +75,9 @@ TEST(ArmValidityChecker, SmallArmClearanceAsWorkedOutByHand) {
 // A NaN joint value passes OMPL's bounds test for a revolute joint; the checker threw the distance
 // query's InputError into the planner for it. It is invalid, at clearance 0.
 TEST(ArmValidityChecker, JointValuesThatAreNotNumbersAreInvalidAtClearanceZero) {
-  const ArmScene scene = test::sliderScene(0.55);
-  auto si = spaceFor(*scene.model);
-  auto checker = std::make_shared<ArmValidityChecker>(si, scene);
-  si->setStateValidityChecker(checker);
-  si->setup();
+  const SmallArm arm;
+  const ompl::base::SpaceInformationPtr& si = arm.si;
+  const std::shared_ptr<ArmValidityChecker>& checker = arm.checker;
   ompl::base::ScopedState<> s(si->getStateSpace());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const auto& q : {std::array<double, 2>{nan, 0.0}, std::array<double, 2>{0.0, nan}}) {
