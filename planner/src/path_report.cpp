@@ -46,6 +46,7 @@ PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& pat
                                        const RigidBodyValidityChecker& checker, double relativeTolerance,
                                        std::size_t maxQueries) {
   PathLeastClearance r;
+  if (path.getStateCount() == 0) return r;
   const ob::SpaceInformationPtr& si = path.getSpaceInformation();
   const RigidBodySpace space = checker.space();
   // What a distance is trusted to (kDistanceTrustFraction): every bound gives it away.
@@ -73,17 +74,16 @@ PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& pat
     heap.push_back({motion, t0, t1, c0, c1, std::max(lower, 0.0)});
     std::push_heap(heap.begin(), heap.end(), later);
   };
-  r.least = std::numeric_limits<double>::infinity();
-  if (path.getStateCount() == 1) {
-    r.least = checker.clearance(path.getState(0));
-    r.queries = 1;
-  }
+  // A motion's first state is the last one's end: measured once.
+  double c = checker.clearance(path.getState(0));
+  r.least = c;
+  r.queries = 1;
   for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k) {
     const ob::State *from = path.getState(k), *to = path.getState(k + 1);
     sweep[k] = translationDistance(from, to, space) + rotationAngle(from, to, space) * checker.robotRadius();
     // As measurePath samples it: the motion cut at the validity-checking resolution.
     const unsigned pieces = std::max(1u, si->getStateSpace()->validSegmentCount(from, to));
-    double t = 0.0, c = clearanceAt(k, 0.0);
+    double t = 0.0;
     for (unsigned i = 1; i <= pieces; ++i) {
       const double next = static_cast<double>(i) / pieces;
       const double cNext = clearanceAt(k, next);
@@ -99,9 +99,9 @@ PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& pat
     heap.pop_back();
     const double middle = 0.5 * (worst.t0 + worst.t1);
     if (!(middle > worst.t0 && middle < worst.t1)) continue;  // as fine as doubles go: its ends decide it
-    const double c = clearanceAt(worst.motion, middle);
-    push(worst.motion, worst.t0, middle, worst.c0, c);
-    push(worst.motion, middle, worst.t1, c, worst.c1);
+    const double atMiddle = clearanceAt(worst.motion, middle);
+    push(worst.motion, worst.t0, middle, worst.c0, atMiddle);
+    push(worst.motion, middle, worst.t1, atMiddle, worst.c1);
   }
   si->freeState(state);
   r.lowerBound = heap.empty() ? r.least : std::min(r.least, heap.front().lower);
