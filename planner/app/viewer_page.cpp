@@ -6,8 +6,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <stdexcept>
@@ -15,6 +13,7 @@
 #include <utility>
 
 #include "adsd/error.h"
+#include "output_file.h"
 
 namespace adsd::app {
 
@@ -278,24 +277,7 @@ ViewerSummary writeViewerPage(const std::string& file, ViewerPage& page, std::si
                                          {"@ADSD_THREE_MODULE@", viewer_assets::kThreeModule},
                                          {"@ADSD_ORBIT_CONTROLS@", viewer_assets::kOrbitControls}});
 
-  const std::string temporary = file + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw InputError(file + ": cannot write the viewer page");
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(temporary.c_str());
-      throw InputError(file + ": writing the viewer page failed");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) {
-    std::remove(temporary.c_str());
-    throw InputError(file + ": cannot rename the finished viewer page into place: " + ec.message());
-  }
+  planner::writeOutputFile(file, "viewer page", [&](std::ostream& out) { out << text; });
   summary.bytes = text.size();
   return summary;
 }

@@ -1,12 +1,11 @@
 #include "adsd/planner/arm_collision_pairs.h"
 
-#include <filesystem>
-#include <fstream>
 
 #include <tinyxml.h>
 
 #include "adsd/error.h"
 #include "input_file.h"
+#include "output_file.h"
 #include "xml_input.h"
 
 namespace adsd::planner {
@@ -105,19 +104,9 @@ void writeSrdf(const ArmModel& model, const ArmCollisionPairs& pairs, const std:
     e->SetAttribute("reason", d.reason);
     robot->LinkEndChild(e);
   }
-  // Through a temporary name renamed into place: a failure leaves no half-written file.
-  const std::string temporary = srdfPath + ".partial";
-  std::error_code ec;
-  if (!doc.SaveFile(temporary.c_str())) {
-    std::filesystem::remove(temporary, ec);
-    throw InputError(srdfPath + ": cannot write the SRDF file");
-  }
-  std::filesystem::rename(temporary, srdfPath, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw InputError(srdfPath + ": cannot rename the finished SRDF file into place: " + ec.message());
-  }
+  TiXmlPrinter printer;
+  doc.Accept(&printer);
+  writeOutputFile(srdfPath, "SRDF file", [&](std::ostream& out) { out << printer.Str(); });
 }
 
 }  // namespace adsd::planner

@@ -2,20 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <functional>
 #include <iomanip>
 #include <limits>
-#include <sstream>
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
 
-#include "adsd/error.h"
 #include "adsd/planner/certified_motion_validator.h"
 #include "adsd/planner/state_pose.h"
+#include "output_file.h"
 
 namespace adsd::planner {
 
@@ -128,35 +123,9 @@ ArmPathClearance measureArmPathClearance(const ompl::geometric::PathGeometric& p
   return m;
 }
 
-namespace {
-
-/// Writes \p file through a temporary name renamed on success; \p body writes the lines.
-void writeAtomically(const std::string& file, const std::function<void(std::ostream&)>& body) {
-  const std::string temporary = file + ".partial";
-  {
-    std::ofstream out(temporary);
-    if (!out) throw InputError(file + ": cannot write the path file");
-    out << std::setprecision(17);
-    body(out);
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(temporary.c_str());
-      throw InputError(file + ": writing the path file failed");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) {
-    std::remove(temporary.c_str());
-    throw InputError(file + ": cannot rename the finished path file into place: " + ec.message());
-  }
-}
-
-}  // namespace
-
 void writePathFile(const std::string& file, const ompl::geometric::PathGeometric& path, RigidBodySpace space) {
-  writeAtomically(file, [&](std::ostream& out) {
+  writeOutputFile(file, "path file", [&](std::ostream& out) {
+    out << std::setprecision(17);
     for (std::size_t i = 0; i < path.getStateCount(); ++i) {
       const ob::State* s = path.getState(i);
       if (space == RigidBodySpace::se2) {
@@ -174,7 +143,8 @@ void writePathFile(const std::string& file, const ompl::geometric::PathGeometric
 
 void writeArmPathFile(const std::string& file, const ompl::geometric::PathGeometric& path,
                       const ArmStateSpace& space, const std::vector<std::string>& jointNames) {
-  writeAtomically(file, [&](std::ostream& out) {
+  writeOutputFile(file, "path file", [&](std::ostream& out) {
+    out << std::setprecision(17);
     out << "# joints:";
     for (const std::string& name : jointNames) out << ' ' << name;
     out << '\n';
