@@ -39,7 +39,35 @@ std::vector<std::pair<std::size_t, std::size_t>> ArmCollisionPairs::enabledPairs
 
 std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmModel& model) {
   const std::size_t n = model.links.size();
+  // MoveIt's setup assistant (computeConnectionGraph): the kinematic tree's edges, parent and
+  // child through any joint; then each link without geometry joins its neighbours to each other,
+  // until nothing changes, so that two links whose only link between them has no geometry are
+  // neighbours. Nothing else: a gripper fixed to a wrist is adjacent to the wrist only, and stays
+  // checked against the forearm the wrist turns on, into which it can fold.
+  std::vector<std::vector<bool>> neighbours(n, std::vector<bool>(n, false));
+  for (std::size_t l = 0; l < n; ++l) {
+    const int j = model.links[l].parentJoint;
+    if (j < 0) continue;
+    const std::size_t parent = model.joints[static_cast<std::size_t>(j)].parentLink;
+    neighbours[l][parent] = neighbours[parent][l] = true;
+  }
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t bare = 0; bare < n; ++bare) {
+      if (model.links[bare].collision) continue;
+      for (std::size_t a = 0; a < n; ++a) {
+        if (!neighbours[bare][a]) continue;
+        for (std::size_t b = a + 1; b < n; ++b) {
+          if (!neighbours[bare][b] || neighbours[a][b]) continue;
+          neighbours[a][b] = neighbours[b][a] = true;
+          changed = true;
+        }
+      }
+    }
+  }
   // Rigid groups: a link joins its parent's group through a fixed joint (parents come first).
+  // Their distance never changes, so a pair in one group is in contact in every state or in none
+  // (MoveIt's sampling passes would call it "Always" or "Never"): checking it decides nothing.
   std::vector<std::size_t> group(n);
   for (std::size_t l = 0; l < n; ++l) {
     const int j = model.links[l].parentJoint;
@@ -47,20 +75,10 @@ std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmMode
                    ? group[model.joints[static_cast<std::size_t>(j)].parentLink]
                    : l;
   }
-  // The group each group hangs from through its movable joint (its first link's parent's group).
-  std::vector<std::size_t> parentGroup(n, n);
-  for (std::size_t l = 0; l < n; ++l) {
-    const int j = model.links[l].parentJoint;
-    if (group[l] == l && j >= 0) parentGroup[l] = group[model.joints[static_cast<std::size_t>(j)].parentLink];
-  }
   std::vector<std::pair<std::size_t, std::size_t>> out;
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n; ++b) {
-      const int jb = model.links[b].parentJoint;  // b > a: b may be a's child, never its parent
-      const bool parentChild = jb >= 0 && model.joints[static_cast<std::size_t>(jb)].parentLink == a;
-      const bool sameGroup = group[a] == group[b];
-      const bool groupsJoined = parentGroup[group[b]] == group[a] || parentGroup[group[a]] == group[b];
-      if (parentChild || sameGroup || groupsJoined) out.emplace_back(a, b);
+      if (neighbours[a][b] || group[a] == group[b]) out.emplace_back(a, b);
     }
   }
   return out;

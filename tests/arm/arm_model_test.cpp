@@ -134,13 +134,60 @@ TEST(PrimitiveMeshes, HaveTheStatedSizesAndContainThePrimitive) {
 TEST(ArmCollisionPairs, AdjacencyDisablesParentChildAndRigidGroups) {
   const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
   const ArmCollisionPairs pairs(m);
-  // base-carriage and carriage-arm: parent and child; arm-tip: one rigid group; carriage-tip: the
-  // tip's group hangs from the carriage through the turn. Left: base-arm and base-tip.
-  const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 2}, {0, 3}};
+  // base-carriage and carriage-arm: parent and child; arm-tip: one rigid group. Left: base-arm,
+  // base-tip, and carriage-tip (the tip is fixed to the arm, not to the carriage).
+  const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 2}, {0, 3}, {1, 3}};
   EXPECT_EQ(pairs.enabledPairs(), expected);
-  EXPECT_EQ(pairs.disabled().size(), 4u);
-  EXPECT_FALSE(pairs.enabled(3, 1));
-  EXPECT_TRUE(pairs.enabled(3, 0));
+  EXPECT_EQ(pairs.disabled().size(), 3u);
+  EXPECT_FALSE(pairs.enabled(2, 1));
+  EXPECT_TRUE(pairs.enabled(3, 1));
+}
+
+// A gripper fixed to a wrist that pitches on a forearm folds into the forearm at a pitch of 2.9:
+// the pair must stay checked (an outside review found it disabled as "Adjacent", and the folded
+// state accepted with 2.47 m of clearance). A hand hung from the forearm through a link without
+// geometry is adjacent to it, as in MoveIt's setup assistant.
+TEST(ArmCollisionPairs, AFixedGripperStaysCheckedAgainstTheForearmAndBareLinksAreSteppedOver) {
+  test::ScratchDir dir;
+  const std::string urdf = dir.write("tool.urdf", R"(<?xml version="1.0"?>
+<robot name="tool">
+  <link name="forearm"><collision><origin xyz="0.5 0 0"/><geometry><box size="1 0.1 0.1"/></geometry></collision></link>
+  <link name="wrist"><collision><geometry><sphere radius="0.06"/></geometry></collision></link>
+  <link name="gripper"><collision><origin xyz="0.3 0 0"/><geometry><box size="0.4 0.08 0.08"/></geometry></collision></link>
+  <link name="bare"/>
+  <link name="hand"><collision><origin xyz="0 0.3 0"/><geometry><box size="0.05 0.2 0.05"/></geometry></collision></link>
+  <joint name="pitch" type="revolute"><parent link="forearm"/><child link="wrist"/><origin xyz="1.1 0 0"/>
+    <axis xyz="0 0 1"/><limit lower="-2.9" upper="2.9" effort="1" velocity="1"/></joint>
+  <joint name="mount" type="fixed"><parent link="wrist"/><child link="gripper"/></joint>
+  <joint name="spin" type="continuous"><parent link="forearm"/><child link="bare"/><axis xyz="1 0 0"/></joint>
+  <joint name="reach" type="prismatic"><parent link="bare"/><child link="hand"/><axis xyz="1 0 0"/>
+    <limit lower="0" upper="0.5" effort="1" velocity="1"/></joint>
+</robot>
+)");
+  const ArmModel m = readUrdf(urdf);
+  const ArmCollisionPairs pairs(m);
+  const std::size_t forearm = m.linkIndex("forearm"), wrist = m.linkIndex("wrist"),
+                    gripper = m.linkIndex("gripper"), hand = m.linkIndex("hand");
+  EXPECT_FALSE(pairs.enabled(forearm, wrist));   // parent and child
+  EXPECT_FALSE(pairs.enabled(wrist, gripper));   // one rigid group
+  EXPECT_TRUE(pairs.enabled(forearm, gripper));  // two joints apart: it can fold in
+  EXPECT_FALSE(pairs.enabled(forearm, hand));    // only a link without geometry between them
+  EXPECT_TRUE(pairs.enabled(wrist, hand));
+  EXPECT_TRUE(pairs.enabled(gripper, hand));
+  // Folded at the limit, a point of the gripper's box (0.2 along it) lies inside the forearm's box
+  // (x in [0, 1], |y| and |z| below 0.05) while the gripper's far end sticks out of it: the two
+  // boxes' surfaces cross.
+  std::vector<Pose> poses;
+  ASSERT_EQ(m.dof(), 3u);
+  double q[3] = {0.0, 0.0, 0.0};
+  q[m.jointIndex("pitch")] = 2.9;
+  forwardKinematics(m, q, poses);
+  const Vec3 inside = poses[gripper] * Vec3(0.2, 0.0, 0.0);
+  EXPECT_GT(inside.x(), 0.0);
+  EXPECT_LT(inside.x(), 1.0);
+  EXPECT_LT(std::abs(inside.y()), 0.05);
+  EXPECT_LT(std::abs(inside.z()), 0.05);
+  EXPECT_GT(std::abs((poses[gripper] * Vec3(0.5, 0.0, 0.0)).y()), 0.05);
 }
 
 TEST(ArmCollisionPairs, SrdfDisablesItsPairsAndRoundTrips) {
@@ -154,7 +201,7 @@ TEST(ArmCollisionPairs, SrdfDisablesItsPairsAndRoundTrips) {
 )");
   ArmCollisionPairs pairs(m);
   disablePairsFromSrdf(m, srdf, pairs);
-  const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 2}};
+  const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 2}, {1, 3}};
   EXPECT_EQ(pairs.enabledPairs(), expected);
   writeSrdf(m, pairs, dir.path("written.srdf"));
   ArmCollisionPairs again(m);
@@ -173,15 +220,16 @@ TEST(ArmCollisionPairs, SrdfDisablesItsPairsAndRoundTrips) {
   EXPECT_THROW(disablePairsFromSrdf(m, dir.path("absent.srdf"), pairs), InputError);
 }
 
-// The small arm's two enabled pairs can never touch (the arm turns 0.1 above the base's top), so
-// the sampling pass disables both as "Never"; the SRDF it writes says so.
+// The small arm's three enabled pairs can never touch (the arm turns 0.1 above the base's top and
+// holds the tip 0.5 from the carriage), so the sampling pass disables all as "Never"; the SRDF it
+// writes says so.
 TEST(ArmCollisionPairs, SamplingPassDisablesPairsNeverInContact) {
   const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
   ArmCollisionPairs pairs(m);
   const PairSamplingResult r = disablePairsBySampling(m, pairs, 200, 7);
   EXPECT_EQ(r.states, 200u);
-  EXPECT_EQ(r.pairsTested, 2u);
-  EXPECT_EQ(r.neverInContact, 2u);
+  EXPECT_EQ(r.pairsTested, 3u);
+  EXPECT_EQ(r.neverInContact, 3u);
   EXPECT_EQ(r.alwaysInContact, 0u);
   EXPECT_TRUE(pairs.enabledPairs().empty());
   test::ScratchDir dir;

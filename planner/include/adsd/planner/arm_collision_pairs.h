@@ -40,11 +40,12 @@ class ArmCollisionPairs {
 };
 
 /// \brief Pairs never checked because the kinematic tree joins them (reason "Adjacent"):
-///  - a parent link and its child link, through any joint;
-///  - links joined only through fixed joints (a rigid group: their distance never changes);
-///  - a link of one rigid group and a link of the group its group hangs from through one
-///    movable joint (links without geometry in a rigid group are skipped over this way, as MoveIt's
-///    setup assistant does).
+///  - a parent link and its child link, through any joint, and, as MoveIt's setup assistant has
+///    it, links whose only link between them has no collision geometry (repeatedly: a chain of
+///    such links counts as one);
+///  - links joined only through fixed joints (a rigid group: their distance never changes).
+/// A link fixed to another is not adjacent to that one's parent: a gripper fixed to a wrist can
+/// fold into the forearm the wrist turns on, and that pair stays checked.
 std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmModel& model);
 
 /// \brief Disables every pair of an SRDF file's `<disable_collisions link1="" link2="" reason=""/>`
