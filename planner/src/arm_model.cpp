@@ -213,7 +213,9 @@ Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::v
       const std::string path = resolveMeshPath(m.filename, urdfDir, search, where);
       Mesh loaded = [&] {
         try {
-          return io::loadMesh(path);
+          // As the ROS tools read a URDF's meshes: a COLLADA file's coordinates in the link frame,
+          // not turned by its <up_axis> (an outside review: a Z_UP bar came out lying along y).
+          return io::loadMesh(path, {}, io::ColladaUpAxis::asWritten);
         } catch (const InputError& e) {
           throw InputError(where + ": mesh '" + m.filename + "': " + e.what());
         }

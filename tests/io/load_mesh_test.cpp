@@ -405,6 +405,25 @@ TEST(LoadMesh, ColladaNestedNodeTransformsComposeFromTheRoot) {
   EXPECT_TRUE(hasVertexNear(mesh, Vec3(10, 1, 1)));
 }
 
+// A Z_UP file: assimp's default turns it to y up, as OMPL.app loads its meshes; read as written
+// (a URDF's meshes, as RViz and MoveIt read them) its coordinates stay. Its <unit> applies either
+// way.
+TEST(LoadMesh, ColladaUpAxisIsTurnedByDefaultAndKeptAsWrittenOnRequest) {
+  TempDir dir;
+  const std::string file = dir.write("zup.dae", colladaWithNodes(R"(<node id="n"><instance_geometry url="#tri"/></node>)", "Z_UP"));
+  const Mesh turned = loadMesh(file);
+  EXPECT_TRUE(hasVertexNear(turned, Vec3(1, 1, 0)));  // (1, 0, 1) with z turned to y
+  EXPECT_FALSE(hasVertexNear(turned, Vec3(1, 0, 1)));
+  const Mesh written = loadMesh(file, {}, ColladaUpAxis::asWritten);
+  EXPECT_TRUE(hasVertexNear(written, Vec3(1, 0, 0)));
+  EXPECT_TRUE(hasVertexNear(written, Vec3(2, 0, 0)));
+  EXPECT_TRUE(hasVertexNear(written, Vec3(1, 0, 1)));
+  std::string inCentimetres = colladaWithNodes(R"(<node id="n"><instance_geometry url="#tri"/></node>)", "Z_UP");
+  inCentimetres.replace(inCentimetres.find(R"(<unit name="meter" meter="1"/>)"), 30, R"(<unit name="cm" meter="0.01"/>)");
+  const Mesh scaled = loadMesh(dir.write("zup_cm.dae", inCentimetres), {}, ColladaUpAxis::asWritten);
+  EXPECT_TRUE(hasVertexNear(scaled, Vec3(0.01, 0, 0.01)));
+}
+
 TEST(LoadMesh, ColladaMeshInstancedTwiceIsPlacedTwice) {
   TempDir dir;
   const Mesh mesh = loadMesh(dir.write("twice.dae", colladaWithNodes(R"(

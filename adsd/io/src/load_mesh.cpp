@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -280,8 +281,12 @@ void requireMoreThanOnePoint(const Gathered& gathered, const std::string& path) 
 
 /// Assimp's part of loading: parse, post-process and gather the triangles in double. Runs in the
 /// child process of readInChildProcess, so its InputErrors travel back as messages.
-Gathered readWithAssimp(const std::string& path) {
+Gathered readWithAssimp(const std::string& path, ColladaUpAxis up) {
   Assimp::Importer importer;
+  // Assimp turns a COLLADA file's up axis to +y by a rotation it puts into the root node's
+  // transform; asWritten leaves it out (its <unit> scale, in the same transform, stays, as RViz
+  // applies it).
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, up == ColladaUpAxis::asWritten);
   const aiScene* scene = importer.ReadFile(path, 0);
   if (scene == nullptr) {
     const std::string error = oneLine(importer.GetErrorString());
@@ -298,8 +303,9 @@ Gathered readWithAssimp(const std::string& path) {
   // three vertices per face); SortByPType splits mixed meshes so that lines and points land in
   // meshes of their own, which gatherMesh drops. Node transforms are applied by our own walk, in double precision, rather than by
   // PreTransformVertices, which composes them in assimp's float and loses the node names our error
-  // messages use. Assimp's defaults for COLLADA <unit> and <up_axis> stay on: that is the frame
-  // OMPL.app's assimp loading sees too, and problem files written for it must mean the same to us.
+  // messages use. Assimp's defaults for COLLADA <unit> and <up_axis> stay on unless the caller reads
+  // as written (ColladaUpAxis): that is the frame OMPL.app's assimp loading sees too, and problem
+  // files written for it must mean the same to us.
   const unsigned steps = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
   scene = importer.ApplyPostProcessing(steps);
   if (scene == nullptr) {
@@ -309,7 +315,7 @@ Gathered readWithAssimp(const std::string& path) {
   return gatherScene(*scene, path);
 }
 
-Mesh loadMeshUnguarded(const std::string& path, const ReaderLimits& limits) {
+Mesh loadMeshUnguarded(const std::string& path, const ReaderLimits& limits, ColladaUpAxis up) {
   std::uint64_t fileBytes = 0;
   {
     const std::string bytes = detail::readWholeFile(path);
@@ -332,7 +338,7 @@ Mesh loadMeshUnguarded(const std::string& path, const ReaderLimits& limits) {
     if (detail::readAsCollada(path, bytes)) detail::requireIntegerIndexLists(path, bytes);
   }  // the bytes are freed before assimp reads the file itself (it may need files beside it)
 
-  Gathered gathered = detail::readInChildProcess(path, [&] { return readWithAssimp(path); },
+  Gathered gathered = detail::readInChildProcess(path, [&] { return readWithAssimp(path, up); },
                                                  detail::effectiveLimits(limits, fileBytes));
   if (gathered.triangles.empty()) throwNoTriangles(path, gathered.lines, gathered.points);
   requireMoreThanOnePoint(gathered, path);
@@ -342,9 +348,9 @@ Mesh loadMeshUnguarded(const std::string& path, const ReaderLimits& limits) {
 
 }  // namespace
 
-Mesh loadMesh(const std::string& path, const ReaderLimits& limits) {
+Mesh loadMesh(const std::string& path, const ReaderLimits& limits, ColladaUpAxis up) {
   try {
-    return loadMeshUnguarded(path, limits);
+    return loadMeshUnguarded(path, limits, up);
   } catch (const std::bad_alloc&) {
     throw InputError(path + ": out of memory while loading the mesh");
   }

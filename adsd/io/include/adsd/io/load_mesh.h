@@ -22,6 +22,16 @@ struct ReaderLimits {
   std::uint64_t memoryBytes = 0;
 };
 
+/// \brief Which way up a COLLADA file's coordinates are read (no other format has an up axis).
+enum class ColladaUpAxis {
+  /// Assimp's default: a file whose <up_axis> is Z_UP (most exporters' choice) or X_UP is turned
+  /// so that its up is +y. OMPL.app's problem meshes are loaded so, and mean the same to us.
+  turnedToYUp,
+  /// The coordinates as written, whatever <up_axis> says: how the ROS tools (RViz, MoveIt's
+  /// geometric_shapes, Tesseract) read a URDF's meshes, in a link frame that is z up.
+  asWritten,
+};
+
 /// \brief Loads every triangle of the file as one mesh.
 ///
 /// The reader: .obj, .off, .ply and .stl (any case) go to ours; a file of any other name goes by
@@ -37,7 +47,7 @@ struct ReaderLimits {
 /// - binary STL, binary PLY with float properties: the file's float32 values, exactly.
 /// - anything else (COLLADA .dae, glTF, 3DS, ...): through assimp, which stores coordinates in
 ///   float; node transforms are composed in double from assimp's float matrices. COLLADA <unit>
-///   and <up_axis> are applied as assimp does by default, as OMPL.app's loading does.
+///   is applied; <up_axis> as \p up says.
 ///
 /// Polygons become triangles (OBJ, OFF, PLY: fanned from the first corner; assimp: its own
 /// triangulation); line and point elements are dropped; bit-identical vertices are shared and
@@ -61,6 +71,7 @@ struct ReaderLimits {
 /// \p limits; no triangles (only lines or points, say); a
 /// vertex index out of range; a non-finite coordinate or one beyond +-tolerance::kMaxCoordinate
 /// (1e75). Running out of memory is reported the same way.
-Mesh loadMesh(const std::string& path, const ReaderLimits& limits = {});
+Mesh loadMesh(const std::string& path, const ReaderLimits& limits = {},
+              ColladaUpAxis up = ColladaUpAxis::turnedToYUp);
 
 }  // namespace adsd::io
