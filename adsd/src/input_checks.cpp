@@ -44,7 +44,8 @@ void requireRigidPose(const Pose& pose, const char* which) {
     out << what() << " has bottom row (" << m.row(3) << "), not (0 0 0 1): not a rigid motion";
     throw InputError(out.str());
   }
-  // The core undoes a rotation by its transpose (query.h, frames): only right when R^T R = I.
+  // The core places B in A's frame by undoing A's rotation: a pose that is no rotation has no
+  // distance to keep.
   const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
   const double deviation = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (!(deviation <= tolerance::kPoseOrthonormality)) {
@@ -61,6 +62,19 @@ void requireRigidPose(const Pose& pose, const char* which) {
     out.precision(3);
     out << what() << " has a translation entry of " << reach << ", beyond +-" << tolerance::kMaxCoordinate
         << ", where the distance computation's squared lengths would overflow";
+    throw InputError(out.str());
+  }
+}
+
+void requireResolvableScene(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB) {
+  const double extent = a.maxAbsCoordinate() + b.maxAbsCoordinate() +
+                        (poseA.translation() - poseB.translation()).cwiseAbs().maxCoeff();
+  if (extent > 0.0 && extent < tolerance::kMinSceneMagnitude) {
+    std::ostringstream out;
+    out.precision(3);
+    out << "distance query: the scene of meshes '" << a.name() << "' and '" << b.name() << "' spans only " << extent
+        << " (below " << tolerance::kMinSceneMagnitude << "), where products of its lengths underflow; "
+        << "scale the meshes up (the distance scales with them)";
     throw InputError(out.str());
   }
 }

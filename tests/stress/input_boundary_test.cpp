@@ -102,6 +102,43 @@ TEST(InputBoundary, ModeOutsideTheEnumIsRefused) {
             "distance query: mode 42 is none of exact, tolerance, threshold and cap");
 }
 
+// Products of lengths underflow in scenes far below the unit scale: an outside review measured
+// 30 % too far at 1e-80 and 0 (a false contact) at 1e-165 on the configuration below. Such a
+// scene is refused; at the smallest scale answered, the answer is exact, on both paths.
+TEST(InputBoundary, ScenesTooSmallToResolveAreRefused) {
+  for (const double s : {1e-80, 1e-165, 0.5 * tolerance::kMinSceneMagnitude}) {
+    const Mesh a({Vec3(0, 0, 0), Vec3(s, 0, 0), Vec3(0, s, 0)}, {{0, 1, 2}}, "small");
+    const Mesh b({Vec3(0.25 * s, 0.25 * s, 0.3 * s), Vec3(0.5 * s, 0.25 * s, 0.6 * s), Vec3(0.25 * s, 0.5 * s, 0.6 * s)},
+                 {{0, 1, 2}}, "above");
+    const std::string message = refusal([&] { distance(a, Pose::Identity(), b, Pose::Identity()); });
+    EXPECT_NE(message.find("distance query: the scene of meshes 'small' and 'above' spans only"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("scale the meshes up"), std::string::npos) << message;
+  }
+  // Placed apart by a pose, the same small meshes are a scene of that size: answered.
+  const double s = 1e-80;
+  const Mesh a({Vec3(0, 0, 0), Vec3(s, 0, 0), Vec3(0, s, 0)}, {{0, 1, 2}}, "small");
+  Pose away = Pose::Identity();
+  away.translation() = Vec3(0, 0, 1);
+  EXPECT_DOUBLE_EQ(distance(a, Pose::Identity(), a, away).distance, 1.0);
+  // Points at one place: 0 apart, exactly, whatever the scale.
+  const Mesh point({Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 0)}, {{0, 1, 2}}, "point");
+  EXPECT_EQ(distance(point, Pose::Identity(), point, Pose::Identity()).distance, 0.0);
+
+  const double smallest = 1.01 * tolerance::kMinSceneMagnitude;
+  Mesh c({Vec3(0, 0, 0), Vec3(smallest, 0, 0), Vec3(0, smallest, 0)}, {{0, 1, 2}}, "smallest");
+  Mesh d({Vec3(0.25, 0.25, 0.3) * smallest, Vec3(0.5, 0.25, 0.6) * smallest, Vec3(0.25, 0.5, 0.6) * smallest},
+         {{0, 1, 2}}, "above");
+  for (int round = 0; round < 2; ++round) {
+    const DistanceResult r = distance(c, Pose::Identity(), d, Pose::Identity());
+    EXPECT_NEAR(r.distance / smallest, 0.3, 1e-15) << (round == 0 ? "from scratch" : "trees");
+    EXPECT_NEAR(r.witnessA.x() / smallest, 0.25, 1e-15);
+    EXPECT_NEAR(r.witnessA.y() / smallest, 0.25, 1e-15);
+    c.buildHierarchy();
+    d.buildHierarchy();
+  }
+}
+
 // A mirror image is an isometry: the distance is the mirrored meshes', on both query paths.
 TEST(InputBoundary, MirrorPosesAreMeasuredAsIsometries) {
   oracle::SeededRandom random(77);
@@ -125,6 +162,49 @@ TEST(InputBoundary, MirrorPosesAreMeasuredAsIsometries) {
       const DistanceResult r = distance(a, mirror, b, Pose::Identity());
       const double expected = static_cast<double>(oracle::meshDistance(a, mirror, b, Pose::Identity()).value);
       EXPECT_NEAR(r.distance, expected, 1e-12) << "pose " << k << (round == 1 ? ", trees" : ", from scratch");
+    }
+    a.buildHierarchy();
+    b.buildHierarchy();
+  }
+}
+
+// A pose accepted as rigid is off orthonormal by up to kPoseOrthonormality; its transpose is then
+// no inverse, and moved a mesh far from its frame's origin by that much times the offset. An
+// outside review's case: a triangle in the plane x = 1e5 of A's frame, R(0,0) = 1 + 4.9e-11,
+// answered 1.0000049 for 0.9999951 (9.8e-6, about 2000 times the promise). The distance is the
+// posed meshes', as the oracle places them (p_world = pose * p), on both query paths.
+TEST(InputBoundary, PosesOffOrthonormalWithinTheLimitPlaceMeshesFarFromTheirOrigin) {
+  const double o = 1e5;
+  Mesh a({Vec3(o, -1, -1), Vec3(o, 2, -1), Vec3(o, -1, 2)}, {{0, 1, 2}}, "a");
+  Mesh b({Vec3(o + 1, 0, 0), Vec3(o + 1.5, 0.1, 0), Vec3(o + 1.5, 0, 0.1)}, {{0, 1, 2}}, "b");
+  Pose skewed = Pose::Identity();
+  skewed.linear()(0, 0) = 1 + 4.9e-11;
+  oracle::SeededRandom random(5);
+  auto promise = [](const Mesh& ma, const Pose& pa, const Mesh& mb, const Pose& pb) {
+    const double magnitude = std::sqrt(3.0) * (ma.maxAbsCoordinate() + mb.maxAbsCoordinate()) +
+                             (pa.translation() - pb.translation()).norm();
+    return 1e-10 * oracle::sceneDiagonal(ma, pa, mb, pb) + tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude;
+  };
+  for (int round = 0; round < 2; ++round) {
+    const char* path = round == 0 ? "from scratch" : "trees";
+    for (const bool skewA : {true, false}) {
+      const Pose& pa = skewA ? skewed : Pose::Identity();
+      const Pose& pb = skewA ? Pose::Identity() : skewed;
+      const double expected = static_cast<double>(oracle::meshDistance(a, pa, b, pb).value);
+      EXPECT_NEAR(distance(a, pa, b, pb).distance, expected, promise(a, pa, b, pb)) << path << (skewA ? ", A" : ", B");
+    }
+    // Rotations off by 5e-11 in a random entry, on both sides, the meshes placed back together.
+    for (int k = 0; k < 40; ++k) {
+      Pose pa(Eigen::Quaterniond(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1),
+                                 random.uniform(-1, 1)).normalized());
+      Pose pb(Eigen::Quaterniond(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1),
+                                 random.uniform(-1, 1)).normalized());
+      pa.linear()(k % 3, (k / 3) % 3) += 5e-11;
+      pb.linear()((k + 1) % 3, (k / 9) % 3) -= 5e-11;
+      pa.translation() = -(pa.linear() * Vec3(o, 0, 0));
+      pb.translation() = -(pb.linear() * Vec3(o, 0, 0)) + random.inCube(1.0) + Vec3(0, 0, 3);
+      const double expected = static_cast<double>(oracle::meshDistance(a, pa, b, pb).value);
+      EXPECT_NEAR(distance(a, pa, b, pb).distance, expected, promise(a, pa, b, pb)) << path << ", pose " << k;
     }
     a.buildHierarchy();
     b.buildHierarchy();

@@ -51,14 +51,27 @@ inline constexpr double kBoundSafetyUlps = 64.0;
 /// No real model comes near it: it is a bound on units and offsets gone wrong, not on scenes.
 inline constexpr double kMaxCoordinate = 1e75;
 
+/// The smallest scene distance() answers: the meshes' largest coordinates plus the poses' offset
+/// (requireResolvableScene). The core forms up to sixth powers of lengths, which go subnormal
+/// below about 1e-51 and vanish below 1e-54: an outside review measured 30 % too far at 1e-80 and
+/// 0 for meshes 3e-166 apart. At 1e-40 they are 1e-240, far from it. Like kMaxCoordinate, a bound
+/// on units gone wrong (the Planck length is 1.6e-35 m), not on scenes.
+inline constexpr double kMinSceneMagnitude = 1e-40;
+
 /// Poses: the rotation part R of a pose must satisfy |(R^T R - I)_ij| <= this for every entry
-/// (dimensionless). The core inverts R by its transpose and moves mesh B by it; a rotation off by
-/// d stretches lengths by up to about d, i.e. an error of d x |p| at a point p of the mesh frame,
-/// which must stay below the 1e-10 x diagonal we promise. Rotations built in double from a unit
+/// (dimensionless). A rotation off by d stretches lengths by up to about d, a relative error of d
+/// in the distance, which must stay below the 1e-10 x diagonal we promise (the core inverts such
+/// a rotation as a matrix: kRotationInverseByTranspose). Rotations built in double from a unit
 /// quaternion or an angle-axis pair are within a few 1e-16; a pose rounded to float (about 1e-7)
 /// or carrying a scale or a shear is refused (a shear was answered wrongly by the tree path before
 /// this check, issue 16; tests/stress/input_boundary_test.cpp pins the refusal).
 inline constexpr double kPoseOrthonormality = 1e-10;
+
+/// A pose's rotation within this of orthonormal (max |R^T R - I|, dimensionless) is inverted by
+/// its transpose: off by d, the transpose moves a point p by d x |p|, below the 64 eps M roundoff
+/// the bounds allow. One farther off, up to kPoseOrthonormality, is inverted as a matrix
+/// (Query::placeFrames), so that a mesh far from its frame's origin is placed where its pose says.
+inline constexpr double kRotationInverseByTranspose = 16 * kEpsilon;
 
 /// GJK: iteration cap. Polytope GJK converges in far fewer steps in practice; the cap only
 /// guarantees termination. Hitting it is harmless here: an unproven separation is split (sec. 6).
