@@ -284,7 +284,10 @@ DistanceResult Query::run() {
     // (traverseTrees): most such queries end at the roots, for less than one triangle pair.
     if (options_.mode != QueryMode::threshold) startFromWitnessHint();
     if (!done_) traverseTrees();
-    return remember(finish());
+    if (counters_.treeAbandoned == 0) return remember(finish());
+    // Over its budget: the stages from scratch finish the query, from the upper bound found. The
+    // bounds of the pairs the traversal dropped still hold (minSkippedLower_).
+    treeA_ = treeB_ = nullptr;
   }
   buf_.orderA.resize(nA);
   buf_.orderB.resize(nB);

@@ -119,6 +119,8 @@ class Query {
   /// Over both trees' node pairs, box tests before triangle tests: best first by lower bound
   /// when the query lowers an upper bound; depth first, nearest first, for a threshold query,
   /// which stops at the first triangle pair within the threshold.
+  /// Gives up past a budget of node pairs (counters_.treeAbandoned), for run() to finish from
+  /// scratch.
   void traverseTrees();
   /// What pairs must be proven farther than (before the roundoff allowance) to be dropped: the
   /// global upper bound of sec. 6.2, or the threshold, cap or tolerance the mode allows.

@@ -62,6 +62,11 @@ inline bool worthHullBound(const MeshHierarchy::Node& na, const MeshHierarchy::N
          std::max(na.t1 - na.t0, nb.t1 - nb.t0) >= kHullBoundMinTriangles;
 }
 
+/// A traversal's budget of node pairs (traverseTrees), per triangle of both meshes, and at least:
+/// past it, the query is finished from scratch.
+constexpr std::uint64_t kTraversalPairsPerTriangle = 8;
+constexpr std::uint64_t kTraversalPairsAtLeast = 1u << 12;
+
 /// How many levels below a convex solid partsAsLargeAsWhole looks, and how large (boxSize2) the
 /// largest node there must still be, relative to the solid's box.
 constexpr int kPartLevels = 3;
@@ -416,7 +421,21 @@ void Query::traverseTrees() {
       have = !done_;
     }
   }
+  // The work a traversal may do before the query is handed to the paper's stages from scratch
+  // (Query::run). Trees that cannot tell triangles apart make a traversal quadratic: 20 000
+  // copies of one triangle, each corner moved by up to 1e-9, against a copy 1e-3 away opened 32
+  // million node pairs (9.9 s) where the stages from scratch, whose GJK bound sees through the
+  // stack, answered in 2.3 ms (an outside review). Far above what real scenes need: with half
+  // this budget (4 per triangle, at least 1024) no query gave up in bench_bands --scenes all
+  // (bands near to collision, and touching), on seven pairs of other CGAL meshes, or in bench_arms.
+  const std::uint64_t budget = counters_.subMeshPairs +
+      std::max<std::uint64_t>(kTraversalPairsPerTriangle * (a_.triangleCount() + b_.triangleCount()),
+                              kTraversalPairsAtLeast);
   while (have && !done_) {
+    if (counters_.subMeshPairs > budget) {
+      counters_.treeAbandoned = 1;
+      return;
+    }
     if (p.lower > bound) {  // the bound fell below this pair's since it was deferred
       ++counters_.pairsRejectedByBounds;
       dropped();

@@ -194,6 +194,7 @@ std::string counters(const DistanceCounters& c) {
       << ", triangles hashed " << c.trianglesHashed << ", triangle pairs tested " << c.trianglePairsTested
       << ", GJK runs " << c.gjkCalls << " (" << c.gjkIterations << " iterations, at most " << c.gjkMaxIterations
       << ")";
+  if (c.treeAbandoned != 0) out << "; the trees could not tell the triangles apart: finished from scratch";
   return out.str();
 }
 
@@ -248,7 +249,7 @@ void writeLine(std::ostream& out, const Query& q) {
 void writeCsvHeader(std::ostream& out) {
   out << "distance,lower,upper,status,ax,ay,az,bx,by,bz,micros,line,triangle_a,triangle_b,max_depth,"
          "sub_mesh_pairs,pairs_rejected_by_bounds,pairs_hashed,pairs_split,triangles_hashed,"
-         "triangle_pairs_tested,gjk_calls,gjk_iterations,gjk_max_iterations\n";
+         "triangle_pairs_tested,gjk_calls,gjk_iterations,gjk_max_iterations,tree_abandoned\n";
 }
 
 void writeCsvRow(std::ostream& out, const Query& q) {
@@ -266,7 +267,7 @@ void writeCsvRow(std::ostream& out, const Query& q) {
   out << micros(q.micros) << ',' << q.line << ',' << r.triangleA << ',' << r.triangleB << ',' << c.maxDepth << ','
       << c.subMeshPairs << ',' << c.pairsRejectedByBounds << ',' << c.pairsHashed << ',' << c.pairsSplit << ','
       << c.trianglesHashed << ',' << c.trianglePairsTested << ',' << c.gjkCalls << ',' << c.gjkIterations << ','
-      << c.gjkMaxIterations << '\n';
+      << c.gjkMaxIterations << ',' << c.treeAbandoned << '\n';
 }
 
 int runDistance(const std::vector<std::string>& args) {

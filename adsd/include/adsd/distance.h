@@ -96,6 +96,10 @@ struct DistanceCounters {
   std::uint64_t gjkCalls = 0;              ///< GJK runs
   std::uint64_t gjkIterations = 0;         ///< GJK iterations over all runs
   int gjkMaxIterations = 0;                ///< most iterations one GJK run took
+  /// 1 when a query on trees went over its budget of node pairs (meshes whose trees cannot tell
+  /// triangles apart, such as a stack of copies of one triangle) and was finished from scratch;
+  /// the counts above then hold both passes.
+  int treeAbandoned = 0;
 };
 
 /// \brief The answer. Lengths in the scene's units; points in the world frame.
