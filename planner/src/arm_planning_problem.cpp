@@ -131,6 +131,7 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     }
   }
   const PlanningSceneYaml sceneFile = readPlanningSceneYaml(file.scenePath);
+  warnings_.insert(warnings_.end(), sceneFile.warnings.begin(), sceneFile.warnings.end());
   const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);
   allowedPlanningTime_ = request.allowedPlanningTime;
   scene_ = std::make_shared<const ArmScene>(makeArmScene(model_, sceneFile.objects, file.srdfPath.value_or("")));

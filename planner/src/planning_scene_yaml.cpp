@@ -156,9 +156,45 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
   if (const Field name = doc.child(root, "name"); name.node.IsDefined() && !name.node.IsNull()) {
     scene.name = doc.text(name);
   }
+  // Fields MoveIt applies and we do not, which change which states are free: said, not dropped
+  // silently (an outside review: a 0.5 m box held in the hand overlapped an obstacle at the start,
+  // and the plan was accepted without a word).
+  auto ignored = [&](const Field& field, const std::string& what) {
+    scene.warnings.push_back(sourceName + ":" + std::to_string(field.line) + ": " + what +
+                             " not applied (not supported): the states checked are without it");
+  };
+  auto hasEntries = [](const Field& f) { return f.node.IsDefined() && !f.node.IsNull() && f.node.size() > 0; };
   if (const Field state = doc.child(root, "robot_state"); state.node.IsDefined() && !state.node.IsNull()) {
     const Field joints = doc.child(state, "joint_state");
     if (joints.node.IsDefined()) scene.defaultJointValues = yaml::jointState(doc, joints).values;
+    if (const Field attached = doc.child(state, "attached_collision_objects"); hasEntries(attached)) {
+      const std::size_t held = attached.node.size();
+      ignored(attached, "robot_state.attached_collision_objects (" + std::to_string(held) +
+                            (held == 1 ? " object" : " objects") + " held by the robot)");
+    }
+  }
+  // link_padding and link_scale: MoveIt writes every link, at 0 and 1 when nothing is asked.
+  auto anyEntryOtherThan = [&](const Field& list, const char* key, double neutral) {
+    if (!list.node.IsDefined() || list.node.IsNull()) return false;
+    if (!list.node.IsSequence()) return hasEntries(list);
+    for (const YAML::Node& entry : list.node) {
+      if (!entry.IsMap() || !entry[key].IsScalar()) return true;
+      try {
+        if (entry[key].as<double>() != neutral) return true;
+      } catch (const YAML::Exception&) {
+        return true;
+      }
+    }
+    return false;
+  };
+  if (const Field padding = doc.child(root, "link_padding"); anyEntryOtherThan(padding, "padding", 0.0)) {
+    ignored(padding, "link_padding other than 0");
+  }
+  if (const Field scale = doc.child(root, "link_scale"); anyEntryOtherThan(scale, "scale", 1.0)) {
+    ignored(scale, "link_scale other than 1");
+  }
+  if (const Field matrix = doc.child(root, "allowed_collision_matrix"); hasEntries(matrix)) {
+    ignored(matrix, "allowed_collision_matrix (give disabled pairs in an SRDF)");
   }
 
   const Field world = doc.child(root, "world");

@@ -39,6 +39,11 @@ struct PlanningSceneYaml {
   std::vector<int> lines;           ///< the line where each object starts
   /// `robot_state.joint_state`: joint name to position (radians or metres); empty when absent.
   std::map<std::string, double> defaultJointValues;
+  /// What the file says that would change which states are free, and is not applied, one line
+  /// each with the file and line: objects attached to the robot (`robot_state.
+  /// attached_collision_objects`), `link_padding` and `link_scale` entries other than 0 and 1, and
+  /// an `allowed_collision_matrix` with entries (an SRDF's <disable_collisions> is what is read).
+  std::vector<std::string> warnings;
 };
 
 /// \brief Reads a scene file; throws adsd::InputError for a missing or unreadable file, broken
