@@ -70,12 +70,22 @@ void requireReplaceable(const std::string& out) {
   std::error_code ec;
   if (!std::filesystem::exists(out, ec)) return;
   std::ifstream in(out, std::ios::binary);
-  std::string head(4096, '\0');
+  std::string head(65536, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
   if (head.find("<robot") == std::string::npos) {
     throw cli::UsageError("--out: '" + out + "' exists and is not an SRDF (no <robot> element near its start): not " +
                           "replaced");
+  }
+  // A URDF has a <robot> element too (an outside review overwrote one so). Both name links and
+  // joints in <link> and <joint> elements (an SRDF's groups do), but only a URDF has a joint's
+  // <parent> and <child> or a link's <visual>, <collision> and <inertial>.
+  for (const std::string element : {"parent", "child", "visual", "collision", "inertial"}) {
+    if (head.find("<" + element + " ") == std::string::npos && head.find("<" + element + ">") == std::string::npos) {
+      continue;
+    }
+    throw cli::UsageError("--out: '" + out + "' exists and is a URDF (it has <" + element + "> elements), not an " +
+                          "SRDF: not replaced");
   }
 }
 

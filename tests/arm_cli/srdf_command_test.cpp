@@ -178,6 +178,22 @@ TEST(SrdfCommand, BadInputWritesNothing) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("exists and is not an SRDF"), std::string::npos) << r.err;
   EXPECT_EQ(readAll(dir / "mesh.stl"), "solid s\nendsolid s\n");
+  // Nor is another URDF, though it has a <robot> element too (an outside review overwrote one).
+  const fs::path other = dir / "other.urdf";
+  fs::copy_file(urdf, other, fs::copy_options::overwrite_existing);
+  const std::string before = readAll(other);
+  r = runAdsd("srdf", {urdf.string(), "--out", other.string()}, dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("exists and is a URDF"), std::string::npos) << r.err;
+  EXPECT_EQ(readAll(other), before);
+  // An SRDF MoveIt's assistant wrote, groups naming links and joints, is replaced.
+  std::ofstream(dir / "moveit.srdf") << "<?xml version=\"1.0\"?>\n<robot name=\"judged\">\n"
+                                        "  <group name=\"arm\"><joint name=\"slide\"/><link name=\"slider\"/></group>\n"
+                                        "  <virtual_joint name=\"v\" type=\"fixed\" parent_frame=\"world\" child_link=\"base\"/>\n"
+                                        "</robot>\n";
+  r = runAdsd("srdf", {urdf.string(), "--out", (dir / "moveit.srdf").string(), "--states", "50"}, dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(readAll(dir / "moveit.srdf").find("disable_collisions"), std::string::npos);
 }
 
 }  // namespace
