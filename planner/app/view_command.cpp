@@ -6,6 +6,7 @@
 // (arm_viewer_html.h) takes an arm's path file: a "# joints: ..." header and one line of joint
 // values per state. Exit status: 0 written, 2 bad input.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -223,9 +224,15 @@ ompl::geometric::PathGeometric readArmPathFile(const std::string& file, const Ar
     for (std::size_t i = 0; i < q.size(); ++i) {
       const ArmJoint& joint = model.joints[model.activeJoints[i]];
       if (joint.type != ArmJointType::continuous && (q[i] < joint.lower || q[i] > joint.upper)) {
+        // The shortest text of each double that reads back as it: at 6 digits a value one ulp
+        // outside read as its limit.
+        const auto text = [](double x) {
+          char digits[32];
+          return std::string(digits, std::to_chars(digits, digits + sizeof digits, x).ptr);
+        };
         std::ostringstream why;
-        why << where << "joint " << joint.name << " = " << q[i] << " is outside its limits [" << joint.lower << ", "
-            << joint.upper << "]";
+        why << where << "joint " << joint.name << " = " << text(q[i]) << " is outside its limits [" << text(joint.lower)
+            << ", " << text(joint.upper) << "]";
         throw InputError(why.str());
       }
     }

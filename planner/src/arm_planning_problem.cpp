@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <charconv>
 #include <limits>
 #include <sstream>
 
@@ -70,9 +71,15 @@ void checkLimits(const ArmModel& model, const std::vector<double>& q, const std:
     const ArmJoint& joint = model.joints[model.activeJoints[i]];
     if (joint.type == ArmJointType::continuous) continue;  // wraps: every angle is a position
     if (q[i] < joint.lower || q[i] > joint.upper) {
+      // The shortest text of each double that reads back as it: at 6 digits a value one ulp
+      // outside read as its limit.
+      const auto text = [](double x) {
+        char digits[32];
+        return std::string(digits, std::to_chars(digits, digits + sizeof digits, x).ptr);
+      };
       std::ostringstream why;
-      why << where << ": " << which << " is outside the joint limits (joint " << joint.name << " = " << q[i]
-          << ", limits [" << joint.lower << ", " << joint.upper << "])";
+      why << where << ": " << which << " is outside the joint limits (joint " << joint.name << " = " << text(q[i])
+          << ", limits [" << text(joint.lower) << ", " << text(joint.upper) << "])";
       throw InputError(why.str());
     }
   }

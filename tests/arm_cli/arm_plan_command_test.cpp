@@ -369,6 +369,9 @@ TEST(ArmViewCommand, PathOutsideTheJointLimitsNamesItsLine) {
   SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
   expectPathRefused(kKr5Header + "0 -0.6 -1.2 0 0.5 0\n3.5 -0.6 -1.2 0 0.5 0\n", ":3",
                     "joint shoulder_yaw = 3.5 is outside its limits [-2.9671, 2.9671]");
+  // One ulp outside: every digit it needs (at 6 digits it read "-2.9671 is outside [-2.9671, ...").
+  expectPathRefused(kKr5Header + "-2.967100000000001 -0.6 -1.2 0 0.5 0\n", ":2",
+                    "joint shoulder_yaw = -2.967100000000001 is outside its limits [-2.9671, 2.9671]");
 }
 
 TEST(ArmViewCommand, PathOfAnotherRobotNamesItsHeader) {
