@@ -232,6 +232,22 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
                        "' is not a movable joint of robot '" + model_->name + "'");
     }
     goal_[index] = constraint.position;
+    // MoveIt samples a joint goal within its tolerance and the joint's limits: a position just
+    // outside a limit (a value rounded on its way into the request) is reached at the limit when
+    // the tolerance reaches it (an outside review: 0.0002 beyond, tolerance 0.001, refused).
+    const ArmJoint& moved = model_->joints[model_->activeJoints[index]];
+    if (moved.type != ArmJointType::continuous) {
+      const double limit = std::clamp(constraint.position, moved.lower, moved.upper);
+      if (limit != constraint.position && constraint.position - constraint.toleranceBelow <= limit &&
+          limit <= constraint.position + constraint.toleranceAbove) {
+        goal_[index] = limit;
+        std::ostringstream why;
+        why << at(file.requestPath, constraint.line) << ": goal joint '" << joint << "' at "
+            << constraint.position << " lies outside its limits [" << moved.lower << ", " << moved.upper
+            << "], within its tolerance of " << limit << ": the goal is taken there";
+        warnings_.push_back(why.str());
+      }
+    }
     smallestTolerance = std::min({smallestTolerance, constraint.toleranceAbove, constraint.toleranceBelow});
   }
   goalThreshold_ = std::max(smallestTolerance, kArmGoalThresholdFloor);

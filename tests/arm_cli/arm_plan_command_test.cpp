@@ -683,6 +683,46 @@ TEST(ArmPlanningProblem, LockedJointStandsAtItsLimits) {
   EXPECT_NE(r.out.find("solved      yes"), std::string::npos) << r.out;
 }
 
+// A goal just outside a joint's limit but within its tolerance of it is taken at the limit, as
+// MoveIt samples a joint goal within its tolerance and the limits; farther out it is refused.
+TEST(ArmPlanningProblem, AGoalOutsideALimitWithinItsToleranceIsTakenAtTheLimit) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "swing.urdf")
+      << "<robot name='swing'>\n"
+         "  <link name='base'><collision><geometry><box size='0.2 0.2 0.2'/></geometry></collision></link>\n"
+         "  <link name='arm'><collision><origin xyz='0.5 0 0'/><geometry><box size='1 0.1 0.1'/></geometry>"
+         "</collision></link>\n"
+         "  <joint name='swing' type='revolute'><parent link='base'/><child link='arm'/><origin xyz='0 0 1'/>"
+         "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
+         "</robot>\n";
+  const auto request = [&](const std::string& goal) {
+    std::ofstream(dir / "request.yaml") << "group_name: arm\nstart_state:\n  joint_state:\n    name: [swing]\n"
+                                           "    position: [0]\n"
+                                           "goal_constraints:\n  - joint_constraints:\n"
+                                           "      - {joint_name: swing, position: " << goal << ", "
+                                           "tolerance_above: 0.001, tolerance_below: 0.001}\n";
+  };
+  std::ofstream(dir / "scene.yaml") << "name: empty\nworld:\n  collision_objects: []\n";
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = swing.urdf\nscene = scene.yaml\n"
+                                        "request = request.yaml\n";
+  const std::string cfg = (dir / "problem.cfg").string();
+  request("1.0002");
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    ASSERT_EQ(p.goalJoints().size(), 1u);
+    EXPECT_EQ(p.goalJoints()[0], 1.0);
+    ASSERT_EQ(p.warnings().size(), 1u);
+    EXPECT_EQ(p.warnings()[0], (dir / "request.yaml").string() +
+                                   ":8: goal joint 'swing' at 1.0002 lies outside its limits [-1, 1], within its "
+                                   "tolerance of 1: the goal is taken there");
+  }
+  request("-1.0009");
+  EXPECT_EQ(ArmPlanningProblem(readMotionBenchMakerProblem(cfg), CheckingOptions{}).goalJoints()[0], -1.0);
+  request("1.002");
+  EXPECT_NE(armProblemError(cfg).find("the goal state is outside the joint limits (joint swing = 1.002"),
+            std::string::npos);
+}
+
 // The slot problems are reached through the slot: start and goal valid (the constructor checks
 // them), the straight joint-space motion between them collides (dense states, 1/1000 of the
 // motion apart), and RRTConnect solves them (wam_slot was once unsolvable: problems/arm/README.md).
