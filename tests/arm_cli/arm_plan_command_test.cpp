@@ -624,11 +624,9 @@ TEST(ArmPlanCommand, PathThatStepsOverAThinPlateIsNotReportedFree) {
   EXPECT_EQ(r.out.find("solved      yes"), std::string::npos) << r.out;
 }
 
-// A joint whose limits are equal (locked) stands at them: it is no coordinate (OMPL cannot plan
-// over a range of zero width, and stopped with an internal error), the start and goal may name it
-// where it stands, and a goal elsewhere is refused naming its line.
-TEST(ArmPlanningProblem, LockedJointStandsAtItsLimits) {
-  const fs::path dir = workDirectory();
+/// locked.urdf in \p dir: a base, and an arm on two revolute joints, 'held' about z locked at 0.5
+/// (its limits are equal) and 'swing' about y within [-1, 1].
+void writeLockedRobot(const fs::path& dir) {
   std::ofstream(dir / "locked.urdf")
       << "<robot name='locked'>\n"
          "  <link name='base'><collision><geometry><box size='0.2 0.2 0.2'/></geometry></collision></link>\n"
@@ -640,19 +638,41 @@ TEST(ArmPlanningProblem, LockedJointStandsAtItsLimits) {
          "  <joint name='swing' type='revolute'><parent link='a'/><child link='arm'/><axis xyz='0 1 0'/>"
          "<limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
          "</robot>\n";
-  const auto request = [&](const std::string& startHeld, const std::string& goalHeld) {
-    std::ofstream(dir / "request.yaml") << "group_name: arm\nstart_state:\n  joint_state:\n    name: [held, swing]\n"
-                                           "    position: [" << startHeld << ", 0]\n"
-                                           "goal_constraints:\n  - joint_constraints:\n"
-                                           "      - {joint_name: swing, position: 0.8, tolerance_above: 0.001, "
-                                           "tolerance_below: 0.001}\n"
-                                           "      - {joint_name: held, position: " << goalHeld << ", "
-                                           "tolerance_above: 0.001, tolerance_below: 0.001}\n";
-  };
+}
+
+/// An arm problem in \p dir: robot file \p robot among no obstacles, the request in request.yaml
+/// (writeRequest). Returns the cfg's path.
+std::string problemAmongNoObstacles(const fs::path& dir, const std::string& robot) {
   std::ofstream(dir / "scene.yaml") << "name: empty\nworld:\n  collision_objects: []\n";
-  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = locked.urdf\nscene = scene.yaml\n"
-                                        "request = request.yaml\n";
-  const std::string cfg = (dir / "problem.cfg").string();
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = " << robot
+                                     << "\nscene = scene.yaml\nrequest = request.yaml\n";
+  return (dir / "problem.cfg").string();
+}
+
+/// request.yaml in \p dir, group "arm": the start's joints (comma-separated names) at their
+/// positions, and one goal constraint per (joint, position), each with tolerance 0.001. The start's
+/// positions are on line 5, the goal's constraints from line 8.
+void writeRequest(const fs::path& dir, const std::string& startNames, const std::string& startPositions,
+                  const std::vector<std::pair<std::string, std::string>>& goal) {
+  std::ofstream out(dir / "request.yaml");
+  out << "group_name: arm\nstart_state:\n  joint_state:\n    name: [" << startNames << "]\n    position: ["
+      << startPositions << "]\ngoal_constraints:\n  - joint_constraints:\n";
+  for (const auto& [joint, position] : goal) {
+    out << "      - {joint_name: " << joint << ", position: " << position
+        << ", tolerance_above: 0.001, tolerance_below: 0.001}\n";
+  }
+}
+
+// A joint whose limits are equal (locked) stands at them: it is no coordinate (OMPL cannot plan
+// over a range of zero width, and stopped with an internal error), the start and goal may name it
+// where it stands, and a goal elsewhere is refused naming its line.
+TEST(ArmPlanningProblem, LockedJointStandsAtItsLimits) {
+  const fs::path dir = workDirectory();
+  writeLockedRobot(dir);
+  const auto request = [&](const std::string& startHeld, const std::string& goalHeld) {
+    writeRequest(dir, "held, swing", startHeld + ", 0", {{"swing", "0.8"}, {"held", goalHeld}});
+  };
+  const std::string cfg = problemAmongNoObstacles(dir, "locked.urdf");
   request("0.5", "0.5");
   {
     const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
@@ -687,29 +707,15 @@ TEST(ArmPlanningProblem, LockedJointStandsAtItsLimits) {
 // MoveIt samples a joint goal within its tolerance and the limits; farther out it is refused.
 TEST(ArmPlanningProblem, AGoalOutsideALimitWithinItsToleranceIsTakenAtTheLimit) {
   const fs::path dir = workDirectory();
-  std::ofstream(dir / "swing.urdf")
-      << "<robot name='swing'>\n"
-         "  <link name='base'><collision><geometry><box size='0.2 0.2 0.2'/></geometry></collision></link>\n"
-         "  <link name='arm'><collision><origin xyz='0.5 0 0'/><geometry><box size='1 0.1 0.1'/></geometry>"
-         "</collision></link>\n"
-         "  <joint name='swing' type='revolute'><parent link='base'/><child link='arm'/><origin xyz='0 0 1'/>"
-         "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
-         "</robot>\n";
+  writeLockedRobot(dir);
   const auto request = [&](const std::string& goal) {
-    std::ofstream(dir / "request.yaml") << "group_name: arm\nstart_state:\n  joint_state:\n    name: [swing]\n"
-                                           "    position: [0]\n"
-                                           "goal_constraints:\n  - joint_constraints:\n"
-                                           "      - {joint_name: swing, position: " << goal << ", "
-                                           "tolerance_above: 0.001, tolerance_below: 0.001}\n";
+    writeRequest(dir, "held, swing", "0.5, 0", {{"swing", goal}});
   };
-  std::ofstream(dir / "scene.yaml") << "name: empty\nworld:\n  collision_objects: []\n";
-  std::ofstream(dir / "problem.cfg") << "[problem]\nname = p\nrobot = swing.urdf\nscene = scene.yaml\n"
-                                        "request = request.yaml\n";
-  const std::string cfg = (dir / "problem.cfg").string();
+  const std::string cfg = problemAmongNoObstacles(dir, "locked.urdf");
   request("1.0002");
   {
     const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
-    ASSERT_EQ(p.goalJoints().size(), 1u);
+    ASSERT_EQ(p.goalJoints().size(), 1u);  // the locked joint is no coordinate
     EXPECT_EQ(p.goalJoints()[0], 1.0);
     ASSERT_EQ(p.warnings().size(), 1u);
     EXPECT_EQ(p.warnings()[0], (dir / "request.yaml").string() +
