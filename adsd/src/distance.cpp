@@ -75,7 +75,8 @@ void Query::placeFrames() {
   // what stays is a relative error of that size in the distance, within the promise.
   auto inverseOf = [](const Eigen::Matrix3d& r) -> Eigen::Matrix3d {
     const double deviation = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    return deviation <= tolerance::kRotationInverseByTranspose ? Eigen::Matrix3d(r.transpose()) : Eigen::Matrix3d(r.inverse());
+    if (deviation <= tolerance::kRotationInverseByTranspose) return r.transpose();
+    return r.inverse();
   };
   const Eigen::Matrix3d inverseA = inverseOf(poseA_.linear());
   rotationBA_ = inverseA * poseB_.linear();

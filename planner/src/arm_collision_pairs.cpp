@@ -1,6 +1,5 @@
 #include "adsd/planner/arm_collision_pairs.h"
 
-
 #include <tinyxml.h>
 
 #include "adsd/error.h"

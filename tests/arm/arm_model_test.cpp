@@ -153,9 +153,11 @@ TEST(ArmCollisionPairs, AFixedGripperStaysCheckedAgainstTheForearmAndBareLinksAr
 <robot name="tool">
   <link name="forearm"><collision><origin xyz="0.5 0 0"/><geometry><box size="1 0.1 0.1"/></geometry></collision></link>
   <link name="wrist"><collision><geometry><sphere radius="0.06"/></geometry></collision></link>
-  <link name="gripper"><collision><origin xyz="0.3 0 0"/><geometry><box size="0.4 0.08 0.08"/></geometry></collision></link>
+  <link name="gripper"><collision><origin xyz="0.3 0 0"/><geometry><box size="0.4 0.08 0.08"/></geometry>
+    </collision></link>
   <link name="bare"/>
-  <link name="hand"><collision><origin xyz="0 0.3 0"/><geometry><box size="0.05 0.2 0.05"/></geometry></collision></link>
+  <link name="hand"><collision><origin xyz="0 0.3 0"/><geometry><box size="0.05 0.2 0.05"/></geometry>
+    </collision></link>
   <joint name="pitch" type="revolute"><parent link="forearm"/><child link="wrist"/><origin xyz="1.1 0 0"/>
     <axis xyz="0 0 1"/><limit lower="-2.9" upper="2.9" effort="1" velocity="1"/></joint>
   <joint name="mount" type="fixed"><parent link="wrist"/><child link="gripper"/></joint>

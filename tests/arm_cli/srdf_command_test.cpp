@@ -189,7 +189,8 @@ TEST(SrdfCommand, BadInputWritesNothing) {
   // An SRDF MoveIt's assistant wrote, groups naming links and joints, is replaced.
   std::ofstream(dir / "moveit.srdf") << "<?xml version=\"1.0\"?>\n<robot name=\"judged\">\n"
                                         "  <group name=\"arm\"><joint name=\"slide\"/><link name=\"slider\"/></group>\n"
-                                        "  <virtual_joint name=\"v\" type=\"fixed\" parent_frame=\"world\" child_link=\"base\"/>\n"
+                                        "  <virtual_joint name=\"v\" type=\"fixed\" parent_frame=\"world\" "
+                                        "child_link=\"base\"/>\n"
                                         "</robot>\n";
   r = runAdsd("srdf", {urdf.string(), "--out", (dir / "moveit.srdf").string(), "--states", "50"}, dir);
   EXPECT_EQ(r.status, 0) << r.err;

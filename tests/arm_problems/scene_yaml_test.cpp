@@ -154,7 +154,8 @@ TEST(PlanningSceneYaml, UnappliedFieldsThatChangeWhatIsFreeAreWarnedOf) {
                            "  entry_names: [a, b]\n";
   const std::vector<std::string> warnings = parsePlanningSceneYaml(text, "w.yaml").warnings;
   ASSERT_EQ(warnings.size(), 4u);
-  EXPECT_EQ(warnings[0].rfind("w.yaml:4: robot_state.attached_collision_objects (1 object held by the robot) not applied", 0), 0u)
+  EXPECT_EQ(warnings[0].rfind("w.yaml:4: robot_state.attached_collision_objects (1 object held by the robot) "
+                              "not applied", 0), 0u)
       << warnings[0];
   EXPECT_EQ(warnings[1].rfind("w.yaml:6: link_padding other than 0 not applied", 0), 0u) << warnings[1];
   EXPECT_EQ(warnings[2].rfind("w.yaml:9: link_scale other than 1 not applied", 0), 0u) << warnings[2];

@@ -410,7 +410,8 @@ TEST(LoadMesh, ColladaNestedNodeTransformsComposeFromTheRoot) {
 // way.
 TEST(LoadMesh, ColladaUpAxisIsTurnedByDefaultAndKeptAsWrittenOnRequest) {
   TempDir dir;
-  const std::string file = dir.write("zup.dae", colladaWithNodes(R"(<node id="n"><instance_geometry url="#tri"/></node>)", "Z_UP"));
+  const std::string node = R"(<node id="n"><instance_geometry url="#tri"/></node>)";
+  const std::string file = dir.write("zup.dae", colladaWithNodes(node, "Z_UP"));
   const Mesh turned = loadMesh(file);
   EXPECT_TRUE(hasVertexNear(turned, Vec3(1, 1, 0)));  // (1, 0, 1) with z turned to y
   EXPECT_FALSE(hasVertexNear(turned, Vec3(1, 0, 1)));
@@ -418,8 +419,9 @@ TEST(LoadMesh, ColladaUpAxisIsTurnedByDefaultAndKeptAsWrittenOnRequest) {
   EXPECT_TRUE(hasVertexNear(written, Vec3(1, 0, 0)));
   EXPECT_TRUE(hasVertexNear(written, Vec3(2, 0, 0)));
   EXPECT_TRUE(hasVertexNear(written, Vec3(1, 0, 1)));
-  std::string inCentimetres = colladaWithNodes(R"(<node id="n"><instance_geometry url="#tri"/></node>)", "Z_UP");
-  inCentimetres.replace(inCentimetres.find(R"(<unit name="meter" meter="1"/>)"), 30, R"(<unit name="cm" meter="0.01"/>)");
+  std::string inCentimetres = colladaWithNodes(node, "Z_UP");
+  const std::string metre = R"(<unit name="meter" meter="1"/>)";
+  inCentimetres.replace(inCentimetres.find(metre), metre.size(), R"(<unit name="cm" meter="0.01"/>)");
   const Mesh scaled = loadMesh(dir.write("zup_cm.dae", inCentimetres), {}, ColladaUpAxis::asWritten);
   EXPECT_TRUE(hasVertexNear(scaled, Vec3(0.01, 0, 0.01)));
 }

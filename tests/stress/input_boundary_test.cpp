@@ -108,8 +108,8 @@ TEST(InputBoundary, ModeOutsideTheEnumIsRefused) {
 TEST(InputBoundary, ScenesTooSmallToResolveAreRefused) {
   for (const double s : {1e-80, 1e-165, 0.5 * tolerance::kMinSceneMagnitude}) {
     const Mesh a({Vec3(0, 0, 0), Vec3(s, 0, 0), Vec3(0, s, 0)}, {{0, 1, 2}}, "small");
-    const Mesh b({Vec3(0.25 * s, 0.25 * s, 0.3 * s), Vec3(0.5 * s, 0.25 * s, 0.6 * s), Vec3(0.25 * s, 0.5 * s, 0.6 * s)},
-                 {{0, 1, 2}}, "above");
+    const Mesh b({Vec3(0.25, 0.25, 0.3) * s, Vec3(0.5, 0.25, 0.6) * s, Vec3(0.25, 0.5, 0.6) * s}, {{0, 1, 2}},
+                 "above");
     const std::string message = refusal([&] { distance(a, Pose::Identity(), b, Pose::Identity()); });
     EXPECT_NE(message.find("distance query: the scene of meshes 'small' and 'above' spans only"), std::string::npos)
         << message;
@@ -183,7 +183,8 @@ TEST(InputBoundary, PosesOffOrthonormalWithinTheLimitPlaceMeshesFarFromTheirOrig
   auto promise = [](const Mesh& ma, const Pose& pa, const Mesh& mb, const Pose& pb) {
     const double magnitude = std::sqrt(3.0) * (ma.maxAbsCoordinate() + mb.maxAbsCoordinate()) +
                              (pa.translation() - pb.translation()).norm();
-    return 1e-10 * oracle::sceneDiagonal(ma, pa, mb, pb) + tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude;
+    return 1e-10 * oracle::sceneDiagonal(ma, pa, mb, pb) +
+           tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude;
   };
   for (int round = 0; round < 2; ++round) {
     const char* path = round == 0 ? "from scratch" : "trees";
