@@ -21,6 +21,12 @@ struct SupportPoint {
   Vec3 point = Vec3::Zero();
   std::uint32_t feature = 0;
   bool isVertex = false;
+  /// How much farther than `point` the set may reach along the direction asked: 0 for an exact
+  /// support; a search that stops early (Query::nodeSupport with a slack) returns a point of the
+  /// set and the most that the parts it left unopened could add, so that the point's value plus
+  /// `reachBeyond` still bounds the set's support from above, and the support planes' margin
+  /// stays a lower bound.
+  double reachBeyond = 0.0;
 };
 
 /// A pair of points, one on each mesh, and their distance: the candidates for upper bounds.
@@ -100,8 +106,8 @@ GjkResult runGjk(const SupportA& supportA, const SupportB& supportB, Vec3 start,
     r.closest.offer(a, b);
 
     // Separating-axis bound along n: every point of A has n.p <= maxA, every point of B n.q >= minB.
-    const double maxA = n.dot(a.point);
-    const double minB = n.dot(b.point);
+    const double maxA = n.dot(a.point) + a.reachBeyond;
+    const double minB = n.dot(b.point) - b.reachBeyond;
     if (minB - maxA > r.lower) {
       r.lower = minB - maxA;
       r.direction = n;

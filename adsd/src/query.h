@@ -151,9 +151,11 @@ class Query {
   // --- supports (eq. 4-5) of a tree node's sub-mesh, by branch and bound over its subtree ---
   /// The vertex of node \p node of \p tree (mesh \p mesh) farthest along \p d (mesh frame),
   /// searched from \p warm (a point of the node's, mesh frame); the result names a triangle of
-  /// the node's that has it as a corner.
+  /// the node's that has it as a corner. With a \p slack > 0, boxes that reach at most that much
+  /// beyond the best vertex found are left unopened: the result is then a vertex within
+  /// SupportPoint::reachBeyond (<= slack) of the support.
   static SupportPoint nodeSupport(const Mesh& mesh, const MeshHierarchy& tree, std::int32_t node, const Vec3& d,
-                                  SupportPoint warm);
+                                  SupportPoint warm, double slack = 0.0);
   /// Both meshes small and on their hulls' boundaries (MeshHierarchy::onHullBoundary): GJK on
   /// all their vertices, to convergence, and the triangle pair at the hulls' nearest points
   /// (convex_pair.cpp). True when that settles the query (the support planes' gap proves the
@@ -176,8 +178,11 @@ class Query {
   /// when \p stop accepts the lower bound (minus roundoff), at \p relativeGap, or once the
   /// simplex is within \p hopelessBelow of the origin (runGjk); counts the run and offers the
   /// closest support points found.
+  /// With a \p slackShare > 0 (and a \p hopelessBelow >= 0), each support search may stop that
+  /// share of the room between the pair's least distance found so far and \p hopelessBelow short
+  /// of the support (nodeSupport's slack).
   GjkResult gjkOnNodes(std::int32_t a, std::int32_t b, const std::function<bool(double)>& stop, double relativeGap,
-                       double hopelessBelow = -std::numeric_limits<double>::infinity());
+                       double hopelessBelow = -std::numeric_limits<double>::infinity(), double slackShare = 0.0);
   /// GJK on the sub-meshes of node pair (a, b) (sec. 4): raises \p lower to the support planes'
   /// margin and offers the closest support points as an upper bound. Stops once the margin proves
   /// the pair farther than \p bound, once the hulls are proven within \p bound (no margin can

@@ -474,6 +474,59 @@ TEST(MeshDistance, AFineMeshFarFromACoarseOneIsBoundedByHulls) {
   EXPECT_LT(perQuery, static_cast<double>(knotLeaves)) << "node pairs per query, knot of " << knotLeaves << " leaves";
 }
 
+/// An open sheet curved like a turbine blade: a third of a cylinder of radius 3 and height 2, a
+/// grid of 48 x 12 quads. Seen from afar, its nodes' boxes all reach about as far as its best
+/// vertex, and the hull bound's support searches stop short of the support by a share of the room
+/// to the bound, adding what they left unopened to the margin (SupportPoint::reachBeyond). A
+/// margin that left it out would drop pairs that hold the answer.
+Mesh curvedSheet() {
+  const int around = 48, up = 12;
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+  for (int i = 0; i <= around; ++i) {
+    const double angle = (2.0 * M_PI / 3.0) * i / around;
+    for (int j = 0; j <= up; ++j) vertices.emplace_back(3.0 * std::cos(angle), 3.0 * std::sin(angle), 2.0 * j / up);
+  }
+  auto at = [&](int i, int j) { return static_cast<std::uint32_t>(i * (up + 1) + j); };
+  for (int i = 0; i < around; ++i) {
+    for (int j = 0; j < up; ++j) {
+      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return Mesh(vertices, triangles, "curved sheet");
+}
+
+/// The sheet against a torus from near its surface to beyond its size, the torus on either side
+/// of the sheet and turned at random: exact answers against the oracle, both ways round, and the
+/// hull bound must have run (on trees, GJK runs only there).
+TEST(MeshDistance, ACurvedSheetSeenFromAfarKeepsItsAnswerUnderTheHullBound) {
+  Mesh sheet = curvedSheet();
+  Mesh ring = shapes::torus(0.5, 0.15, 24, 10);
+  sheet.buildHierarchy();
+  ring.buildHierarchy();
+  SeededRandom random(5150);
+  const int poses = kPosesPerPair / 10;
+  std::uint64_t gjkRuns = 0;
+  for (int i = 0; i < poses; ++i) {
+    // Beside the sheet's middle, inside or outside the cylinder, 0.3 to 4 from its surface.
+    const double angle = random.uniform(0.3, 1.8), height = random.uniform(0.0, 2.0);
+    const double radius = random.uniform(0.0, 1.0) < 0.5 ? random.uniform(3.8, 7.5) : random.uniform(0.2, 2.2);
+    const Pose poseRing(Eigen::Translation3d(radius * std::cos(angle), radius * std::sin(angle), height) *
+                        random.rotation());
+    const oracle::MeshPairDistance truth = oracle::meshDistance(sheet, Pose::Identity(), ring, poseRing);
+    const double allowed = kPromisedAccuracy * sceneDiagonal(sheet, Pose::Identity(), ring, poseRing);
+    SCOPED_TRACE("pose " + std::to_string(i) + ", oracle " + std::to_string(truth.value));
+    const DistanceResult exact = distance(sheet, Pose::Identity(), ring, poseRing, DistanceOptions::exactDistance());
+    ASSERT_EQ(exact.status, DistanceStatus::exact);
+    EXPECT_NEAR(exact.distance, truth.value, allowed);
+    const DistanceResult swapped = distance(ring, poseRing, sheet, Pose::Identity(), DistanceOptions::exactDistance());
+    EXPECT_NEAR(swapped.distance, truth.value, allowed);
+    gjkRuns += exact.counters.gjkCalls + swapped.counters.gjkCalls;
+  }
+  EXPECT_GT(gjkRuns, 0u);
+}
+
 // Two flat bars crossing at right angles, one above the other, each turned 45 degrees about its
 // length: no face axis of either box and not the line through their centres separates them, only
 // the cross product of their lengths (z). A validity query tested the roots by their spheres
