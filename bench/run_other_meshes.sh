@@ -11,7 +11,7 @@
 # (knot1, knot2, cylinder), and pairs whose sizes differ 100-fold (cheese and mannequin-devil,
 # lion and elk). Pairs are side by side as listed below; bench_bands places them near, mid range
 # and far apart along random lines and in collision, and checks every answer against FCL's.
-# About 3 minutes on an idle 2-core machine (20 poses, 2 rounds).
+# About 10 minutes on an idle 2-core machine (20 poses, 2 rounds).
 #
 # --bands passes bench_bands' band list (default: its five; touching,distant measures the gaps
 # below and beyond them); --scratch adds bench_bands' from-scratch column (no trees: our query
