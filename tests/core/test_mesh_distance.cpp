@@ -509,7 +509,7 @@ TEST(MeshDistance, ACurvedSheetSeenFromAfarKeepsItsAnswerUnderTheHullBound) {
   const int poses = kPosesPerPair / 10;
   std::uint64_t gjkRuns = 0;
   for (int i = 0; i < poses; ++i) {
-    // Beside the sheet's middle, inside or outside the cylinder, 0.3 to 4 from its surface.
+    // Beside the sheet, inside or outside the cylinder, its tube 0.15 to 4 from the sheet's surface.
     const double angle = random.uniform(0.3, 1.8), height = random.uniform(0.0, 2.0);
     const double radius = random.uniform(0.0, 1.0) < 0.5 ? random.uniform(3.8, 7.5) : random.uniform(0.2, 2.2);
     const Pose poseRing(Eigen::Translation3d(radius * std::cos(angle), radius * std::sin(angle), height) *
