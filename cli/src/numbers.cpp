@@ -42,20 +42,16 @@ bool RealInterval::contains(double x) const {
   return aboveLow && belowHigh;
 }
 
-namespace {
-
-std::string shortest(double x) {
+std::string shortestText(double x) {
   char text[32];
   const auto result = std::to_chars(text, text + sizeof text, x);
   return std::string(text, result.ptr);
 }
 
-}  // namespace
-
 std::string RealInterval::describe() const {
   std::string lowPart, highPart;
-  if (std::isfinite(low)) lowPart = (lowIncluded ? ">= " : "> ") + shortest(low);
-  if (std::isfinite(high)) highPart = (highIncluded ? "<= " : "< ") + shortest(high);
+  if (std::isfinite(low)) lowPart = (lowIncluded ? ">= " : "> ") + shortestText(low);
+  if (std::isfinite(high)) highPart = (highIncluded ? "<= " : "< ") + shortestText(high);
   if (lowPart.empty() && highPart.empty()) return "";
   if (lowPart.empty()) return highPart;
   if (highPart.empty()) return lowPart;

@@ -9,8 +9,6 @@
 // two rigid meshes are answered as a planner would, on sub-mesh trees built once; a few, from
 // scratch by the paper's stages (which need no preprocessing).
 
-#include <array>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -22,6 +20,7 @@
 #include <vector>
 
 #include "adsd/cli/command_line.h"
+#include "adsd/cli/numbers.h"
 #include "adsd/distance.h"
 #include "adsd/error.h"
 #include "adsd/io/load_mesh.h"
@@ -88,11 +87,7 @@ struct DistanceArguments {
 };
 
 /// Shortest text that reads back as the same double ("inf" for infinity).
-std::string number(double value) {
-  std::array<char, 32> buffer;
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
-}
+std::string number(double value) { return cli::shortestText(value); }
 
 /// The query mode from the flags; conflicting modes are an error rather than a silent choice.
 DistanceOptions queryOptions(const cli::Arguments& given) {

@@ -6,7 +6,6 @@
 // (arm_viewer_html.h) takes an arm's path file: a "# joints: ..." header and one line of joint
 // values per state. Exit status: 0 written, 2 bad input.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -24,6 +23,7 @@
 #include <ompl/util/Console.h>
 
 #include "adsd/cli/command_line.h"
+#include "adsd/cli/numbers.h"
 #include "adsd/error.h"
 #include "adsd/planner/arm_planning_problem.h"
 #include "adsd/planner/arm_state_space.h"
@@ -224,15 +224,10 @@ ompl::geometric::PathGeometric readArmPathFile(const std::string& file, const Ar
     for (std::size_t i = 0; i < q.size(); ++i) {
       const ArmJoint& joint = model.joints[model.activeJoints[i]];
       if (joint.type != ArmJointType::continuous && (q[i] < joint.lower || q[i] > joint.upper)) {
-        // The shortest text of each double that reads back as it: at 6 digits a value one ulp
-        // outside read as its limit.
-        const auto text = [](double x) {
-          char digits[32];
-          return std::string(digits, std::to_chars(digits, digits + sizeof digits, x).ptr);
-        };
+        // Shortest texts: at 6 digits a value one ulp outside read as its limit.
         std::ostringstream why;
-        why << where << "joint " << joint.name << " = " << text(q[i]) << " is outside its limits [" << text(joint.lower)
-            << ", " << text(joint.upper) << "]";
+        why << where << "joint " << joint.name << " = " << cli::shortestText(q[i]) << " is outside its limits ["
+            << cli::shortestText(joint.lower) << ", " << cli::shortestText(joint.upper) << "]";
         throw InputError(why.str());
       }
     }

@@ -1,9 +1,9 @@
 #include "adsd/planner/arm_planning_problem.h"
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <fstream>
-#include <charconv>
 #include <limits>
 #include <sstream>
 

@@ -25,6 +25,11 @@ std::optional<std::uint64_t> toWhole(std::string_view text);
 /// "inf" and "nan", and for magnitudes beyond the largest double.
 std::optional<double> toReal(std::string_view text);
 
+/// \brief The shortest decimal text that reads back (toReal, strtod) as exactly \p x: a value one
+/// ulp beyond a limit prints apart from the limit, where a stream's 6 digits print both alike
+/// ("inf", "-inf" and "nan" for those).
+std::string shortestText(double x);
+
 /// \brief The reals an option takes: an interval, each end open or closed (infinite ends are open).
 struct RealInterval {
   double low = -std::numeric_limits<double>::infinity();
