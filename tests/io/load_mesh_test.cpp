@@ -371,6 +371,19 @@ TEST(LoadMesh, AsciiStlWithUtf8Name) {
   EXPECT_EQ(mesh.triangleCount(), 1u);
 }
 
+TEST(LoadMesh, AsciiStlWithAVeryLongSolidNameReadsInLinearTime) {
+  // Three million words of name on each of the solid's lines (12 MB): skipping them took a copy of
+  // the line's remaining words per word, time growing with the square of the line (100 000 words:
+  // 5 s), hours for this file, past ctest's timeout. The same loader reads URDF and problem meshes.
+  std::string name;
+  for (int k = 0; k < 3'000'000; ++k) name += "w ";
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("long_name.stl", "solid " + name + "\nfacet normal 0 0 1\nouter loop\n"
+                                       "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid " +
+                                       name + "\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
 TEST(LoadMesh, AsciiStlWithAnEmptyExtraSolid) {
   // The empty solid becomes a mesh without faces, which assimp's later steps would reject.
   TempDir dir;

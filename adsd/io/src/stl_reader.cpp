@@ -51,6 +51,8 @@ class WordScanner {
     return true;
   }
   int line() const { return lines_.lineNumber(); }
+  /// Drops the words left on the current line (a solid's name), whatever their number.
+  void skipRestOfLine() { pending_ = words_.size(); }
 
  private:
   LineScanner lines_;
@@ -68,10 +70,10 @@ class AsciiStlReader {
     while (words_.next(word)) {
       if (word == "solid" && !inSolid) {
         inSolid = true;
-        skipRestOfLine();  // the solid's name, any words
+        words_.skipRestOfLine();  // the solid's name, any words
       } else if (word == "endsolid" && inSolid) {
         inSolid = false;
-        skipRestOfLine();
+        words_.skipRestOfLine();
       } else if (word == "facet" && inSolid) {
         readFacet();
       } else {
@@ -86,13 +88,6 @@ class AsciiStlReader {
 
  private:
   std::string at() const { return path_ + ":" + std::to_string(words_.line()) + ": "; }
-
-  void skipRestOfLine() {
-    const int line = words_.line();
-    WordScanner lookahead = words_;
-    std::string_view word;
-    while (lookahead.next(word) && lookahead.line() == line) words_ = lookahead;
-  }
 
   void expect(std::string_view wanted) {
     std::string_view word;
