@@ -262,10 +262,11 @@ std::uint64_t countSurfaceFaces(const aiScene& scene, std::uint64_t& lines, std:
   throw InputError(what);
 }
 
-/// Some of assimp's readers (ASE, CSM) answer a file they cannot make sense of with a placeholder
-/// instead of an error: "hello world" saved as .ase came back as 8 triangles on one point. No file
-/// that describes a surface gives that, so it is refused; our own readers, which invent nothing,
-/// accept a file that is a single point.
+/// Some of assimp's readers (ASE, CSM) answered a file they cannot make sense of with a placeholder
+/// instead of an error: "hello world" saved as .ase came back as 8 triangles on one point, the
+/// skeleton mesh that readWithAssimp now turns off. Any placeholder of that shape left is refused:
+/// no file that describes a surface gives it. Our own readers, which invent nothing, accept a file
+/// that is a single point.
 void requireMoreThanOnePoint(const Gathered& gathered, const std::string& path) {
   const Vec3& first = gathered.vertices[gathered.triangles.front()[0]];
   for (const TriangleIndices& t : gathered.triangles) {
@@ -287,6 +288,10 @@ Gathered readWithAssimp(const std::string& path, ColladaUpAxis up) {
   // transform; asWritten leaves it out (its <unit> scale, in the same transform, stays, as RViz
   // applies it).
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, up == ColladaUpAxis::asWritten);
+  // A file without geometry (a COLLADA scene of bare nodes, a BVH motion, an instance naming no
+  // geometry) is otherwise given a mesh assimp invents to show the node skeleton, which would
+  // then stand in for the robot or obstacle without a word.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
   const aiScene* scene = importer.ReadFile(path, 0);
   if (scene == nullptr) {
     const std::string error = oneLine(importer.GetErrorString());
