@@ -314,8 +314,12 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
   }
   if (j.type != ArmJointType::fixed) {
     const Vec3 axis(uj.axis.x, uj.axis.y, uj.axis.z);
-    if (!(axis.norm() > 0.0) || !axis.allFinite()) throw InputError(where + ": the axis must be a non-zero vector");
-    j.axis = axis.normalized();
+    if (!axis.allFinite()) throw InputError(where + ": <axis xyz> must be finite, got " + describe(axis));
+    // Scaled by its largest component first: the norm of (0, 0, 1e300) overflowed to inf and that
+    // of (0, 0, 1e-170) underflowed to 0, either way no direction, though both name the z axis.
+    const double largest = axis.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) throw InputError(where + ": the axis must be a non-zero vector");
+    j.axis = (axis / largest).normalized();
   }
   if (j.type == ArmJointType::continuous) {
     j.lower = -std::acos(-1.0);

@@ -492,6 +492,30 @@ TEST(ArmModel, JointOriginAndLimitsOutOfRangeAreRefusedNamingTheJoint) {
   EXPECT_EQ(readUrdf(dir.write("fine.urdf", robot(R"(<origin xyz="1e6 0 0"/>)", limit))).joints[0].upper, 1.0);
 }
 
+// An axis's norm overflowed (0 0 1e300: a zero axis, then "pose is not rigid" from the distance
+// query, naming no file) or underflowed (0 -1e-170 0: refused as a zero vector); both name a
+// direction.
+TEST(ArmModel, JointAxisOfAnyFiniteScaleIsADirection) {
+  test::ScratchDir dir;
+  const auto robot = [](const std::string& axis) {
+    return "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n"
+           "<joint name=\"j\" type=\"revolute\">\n<parent link=\"a\"/><child link=\"b\"/>\n<axis xyz=\"" +
+           axis + "\"/>\n<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>\n</joint>\n</robot>\n";
+  };
+  EXPECT_EQ(readUrdf(dir.write("huge.urdf", robot("0 0 1e300"))).joints[0].axis, Vec3::UnitZ());
+  EXPECT_EQ(readUrdf(dir.write("tiny.urdf", robot("0 -1e-170 0"))).joints[0].axis, -Vec3::UnitY());
+  EXPECT_TRUE(readUrdf(dir.write("diagonal.urdf", robot("1e300 1e300 0"))).joints[0].axis.isApprox(
+      Vec3(1, 1, 0).normalized()));
+  // (urdfdom refuses inf and nan components itself.)
+  const std::string zero = dir.write("zero.urdf", robot("0 0 0"));
+  try {
+    readUrdf(zero);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), zero + ":4: joint 'j': the axis must be a non-zero vector");
+  }
+}
+
 // TinyXML parses an element by a recursive call: a deep enough file overflowed the stack (SIGSEGV,
 // adversarial sweep). Refused first, naming the file; markup inside comments, CDATA and attribute
 // values, and self-closing elements, do not count as nesting.
