@@ -8,6 +8,8 @@
 
 #include <ompl/geometric/PathGeometric.h>
 
+#include "adsd/planner/path_report.h"
+
 namespace adsd::app {
 
 /// \brief Spacing of the states at which an arm path's clearance is measured: joint-space distance
@@ -29,13 +31,14 @@ inline double armClearanceStep(const ompl::geometric::PathGeometric& path) {
 
 /// \brief A copy of \p path interpolated to states at most armClearanceStep() apart, and then at
 /// most the space's validity-checking resolution apart (finer on a joint space of small ranges,
-/// a gripper's). adsd::planner::measurePath() measures the clearance at exactly these states (its
-/// own interpolation to that resolution adds none), and so does measureArmPathClearance().
+/// a gripper's) unless that would pass planner::kMaxMeasuredStates (planner::measuredStates: the
+/// resolution's pass had undone this cap, 3 GB for a path file of 50 000 states).
+/// adsd::planner::measurePath() measures the clearance at measuredStates() of these states, which
+/// the arm viewer shows, and measureArmPathClearance() at these.
 inline ompl::geometric::PathGeometric armClearanceSamples(const ompl::geometric::PathGeometric& path) {
   ompl::geometric::PathGeometric dense(path);
   dense.interpolate(static_cast<unsigned>(std::ceil(path.length() / armClearanceStep(path))) + 1);
-  dense.interpolate();
-  return dense;
+  return planner::measuredStates(dense);
 }
 
 /// \brief The largest distance between consecutive states of \p samples.

@@ -61,8 +61,7 @@ ViewerSummary writeArmViewerHtml(const std::string& file, const planner::ArmPlan
   // samples included), or the start and the goal.
   ompl::geometric::PathGeometric states(si);
   if (path != nullptr) {
-    states = armClearanceSamples(*path);
-    states.interpolate();
+    states = planner::measuredStates(armClearanceSamples(*path));
   } else {
     ompl::base::ScopedState<> start(si->getStateSpace()), goal(si->getStateSpace());
     space.fromJoints(problem.startJoints().data(), start.get());

@@ -392,8 +392,12 @@ int plan(const std::vector<std::string>& args) {
   const ompl::geometric::PathGeometric& path = ss.getSolutionPath();
   const PathMeasures measures = measurePath(path, *problem.checker());
   std::printf("path        %zu states, length %.6g\n", path.getStateCount(), measures.length);
-  std::printf("clearance   min %.6g, mean %.6g (over %zu states at the validity-checking resolution)\n",
-              measures.minClearance, measures.meanClearance, measures.statesSampled);
+  const std::string over = measures.coarserThanResolution
+                               ? "cut coarser than the validity-checking resolution, to about " +
+                                     std::to_string(kMaxMeasuredStates) + " or the path's own"
+                               : std::string("at the validity-checking resolution");
+  std::printf("clearance   min %.6g, mean %.6g (over %zu states %s)\n", measures.minClearance,
+              measures.meanClearance, measures.statesSampled, over.c_str());
   // Between those states too: a motion can pass nearer an edge than either end of its step, or,
   // checked discretely, step over a thin obstacle.
   const PathLeastClearance along = leastClearanceAlong(path, *problem.checker());

@@ -287,8 +287,12 @@ int view(const std::vector<std::string>& args) {
                                           a->pathFile ? "path " + *a->pathFile : std::string("start and goal, no path"));
   std::printf("problem     %s (%s, %s)\n", file.name.c_str(), file.space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)",
               a->problem.c_str());
-  std::printf("clearance   min %.6g (over %zu states%s)\n", s.minClearance, s.states,
-              path ? " at the validity-checking resolution" : ": the start and the goal");
+  const std::string over = !path ? ": the start and the goal"
+                            : s.coarserThanResolution
+                                ? ": the motions cut coarser than the validity-checking resolution, to about " +
+                                      std::to_string(kMaxMeasuredStates) + " states or the path's own"
+                                : std::string(" at the validity-checking resolution");
+  std::printf("clearance   min %.6g (over %zu states%s)\n", s.minClearance, s.states, over.c_str());
   if (path) {  // as `adsd plan` prints it: between the states too
     const PathLeastClearance along = leastClearanceAlong(*path, *problem.checker());
     std::printf("along       min %.6g between the states too (no state of the motions nearer than %.6g; %zu "

@@ -4,6 +4,7 @@
 
 #include <ompl/base/ScopedState.h>
 
+#include "adsd/planner/path_report.h"
 #include "adsd/planner/state_pose.h"
 #include "viewer_page.h"
 
@@ -17,9 +18,9 @@ ViewerSummary writeViewerHtml(const std::string& file, const planner::ProblemFil
 
   // The states shown: the path as measurePath() samples it, or the start and the goal.
   ompl::geometric::PathGeometric states(si);
+  bool coarser = false;
   if (path != nullptr) {
-    states = *path;
-    states.interpolate();
+    states = planner::measuredStates(*path, &coarser);
   } else {
     ompl::base::ScopedState<> start(si->getStateSpace()), goal(si->getStateSpace());
     planner::poseToState(problemFile.start.toPose(), scene.space, start.get());
@@ -54,8 +55,10 @@ ViewerSummary writeViewerHtml(const std::string& file, const planner::ProblemFil
       }
     }
   };
-  return writeViewerPage(file, page, states.getStateCount(), describe,
-                         kWitnessSlackPerScale * planner::sceneScale(scene));
+  ViewerSummary summary = writeViewerPage(file, page, states.getStateCount(), describe,
+                                          kWitnessSlackPerScale * planner::sceneScale(scene));
+  summary.coarserThanResolution = coarser;
+  return summary;
 }
 
 }  // namespace adsd::app

@@ -57,6 +57,7 @@ struct ViewerSummary {
   std::size_t states = 0;     ///< states shown (the path at the resolution `adsd plan` measures it)
   double minClearance = 0.0;  ///< least of the checker's clearance over those states
   std::size_t bytes = 0;      ///< size of the page
+  bool coarserThanResolution = false;  ///< the path's states capped (planner::kMaxMeasuredStates)
 };
 
 /// \brief A pair of meshes that may realize a state's clearance, posed in the world frame; the

@@ -16,11 +16,53 @@ namespace adsd::planner {
 
 namespace ob = ompl::base;
 
+namespace {
+
+/// How many pieces each motion of \p path is cut into by measuredStates (and leastClearanceAlong's
+/// first pass, which starts from the same states); sets \p coarser when the cap scaled them down.
+std::vector<unsigned> measuredPieces(const ompl::geometric::PathGeometric& path, bool& coarser) {
+  const ob::StateSpacePtr& space = path.getSpaceInformation()->getStateSpace();
+  std::vector<unsigned> pieces;
+  double total = 1.0;  // the first state
+  for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k) {
+    pieces.push_back(std::max(1u, space->validSegmentCount(path.getState(k), path.getState(k + 1))));
+    total += pieces.back();
+  }
+  coarser = total > static_cast<double>(kMaxMeasuredStates);
+  if (coarser) {
+    const double scale = static_cast<double>(kMaxMeasuredStates) / total;
+    for (unsigned& p : pieces) p = std::max(1u, static_cast<unsigned>(std::floor(p * scale)));
+  }
+  return pieces;
+}
+
+}  // namespace
+
+ompl::geometric::PathGeometric measuredStates(const ompl::geometric::PathGeometric& path, bool* coarser) {
+  bool capped = false;
+  const std::vector<unsigned> pieces = measuredPieces(path, capped);
+  if (coarser != nullptr) *coarser = capped;
+  const ob::SpaceInformationPtr& si = path.getSpaceInformation();
+  ompl::geometric::PathGeometric dense(si);
+  if (path.getStateCount() == 0) return dense;
+  dense.append(path.getState(0));
+  ob::State* state = si->allocState();
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    for (unsigned i = 1; i < pieces[k]; ++i) {
+      si->getStateSpace()->interpolate(path.getState(k), path.getState(k + 1), static_cast<double>(i) / pieces[k],
+                                       state);
+      dense.append(state);
+    }
+    dense.append(path.getState(k + 1));
+  }
+  si->freeState(state);
+  return dense;
+}
+
 PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ob::StateValidityChecker& checker) {
   PathMeasures m;
   m.length = path.length();
-  ompl::geometric::PathGeometric dense(path);
-  dense.interpolate();  // states at the space's validity-checking resolution
+  const ompl::geometric::PathGeometric dense = measuredStates(path, &m.coarserThanResolution);
   double sum = 0.0;
   m.minClearance = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < dense.getStateCount(); ++i) {
@@ -69,6 +111,8 @@ PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& pat
     heap.push_back({motion, t0, t1, c0, c1, std::max(lower, 0.0)});
     std::push_heap(heap.begin(), heap.end(), later);
   };
+  bool coarser = false;
+  const std::vector<unsigned> firstPieces = measuredPieces(path, coarser);
   // A motion's first state is the last one's end: measured once.
   double c = checker.clearance(path.getState(0));
   r.least = c;
@@ -76,8 +120,9 @@ PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& pat
   for (std::size_t k = 0; k + 1 < path.getStateCount(); ++k) {
     const ob::State *from = path.getState(k), *to = path.getState(k + 1);
     sweep[k] = translationDistance(from, to, space) + rotationAngle(from, to, space) * checker.robotRadius();
-    // As measurePath samples it: the motion cut at the validity-checking resolution.
-    const unsigned pieces = std::max(1u, si->getStateSpace()->validSegmentCount(from, to));
+    // As measurePath samples it: the motion cut at the validity-checking resolution, or coarser
+    // on a path of more than kMaxMeasuredStates such states.
+    const unsigned pieces = firstPieces[k];
     double t = 0.0;
     for (unsigned i = 1; i <= pieces; ++i) {
       const double next = static_cast<double>(i) / pieces;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 #include <ompl/base/DiscreteMotionValidator.h>
 
@@ -224,6 +225,61 @@ TEST(LeastClearanceAlong, FindsTheWallADiscretePathStepsOverAndTheLeastOverTheTo
   std::printf("[least clearance along] crossing: %zu queries; over the top: least %.9g, bound %.9g, %zu queries, "
               "20 001 samples' least %.9g\n",
               along.queries, top.least, top.lowerBound, top.queries, dense);
+}
+
+// The states a path is measured and shown at (measuredStates): the validity-checking resolution's,
+// as PathGeometric::interpolate() makes them, state for state; a path whose resolution would need
+// millions of states (a path file of random states: `adsd view` took 25 s, 830 MB and a 138 MB
+// page for 20 000 of them) is cut coarser, to about kMaxMeasuredStates states, motions whole.
+TEST(MeasuredStates, AreTheResolutionsStatesUpToACap) {
+  SceneFixture f = test::officeFixture();
+  auto checker = std::make_shared<MeshValidityChecker>(f.si, f.scene);
+  f.si->setStateValidityChecker(checker);
+  f.si->setup();
+  const ob::RealVectorBounds bounds = f.si->getStateSpace()->as<ob::SE2StateSpace>()->getBounds();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> x(bounds.low[0], bounds.high[0]), y(bounds.low[1], bounds.high[1]),
+      yaw(-3.0, 3.0);
+  ob::ScopedState<ob::SE2StateSpace> s(f.si);
+  const auto randomPath = [&](int states) {
+    ompl::geometric::PathGeometric path(f.si);
+    for (int i = 0; i < states; ++i) {
+      s->setXY(x(random), y(random));
+      s->setYaw(yaw(random));
+      path.append(s.get());
+    }
+    return path;
+  };
+
+  const ompl::geometric::PathGeometric few = randomPath(4);
+  ompl::geometric::PathGeometric interpolated(few);
+  interpolated.interpolate();
+  bool coarser = true;
+  const ompl::geometric::PathGeometric measured = measuredStates(few, &coarser);
+  EXPECT_FALSE(coarser);
+  ASSERT_EQ(measured.getStateCount(), interpolated.getStateCount());
+  ASSERT_GT(measured.getStateCount(), 40u) << "random motions across the office span many resolutions";
+  for (std::size_t i = 0; i < measured.getStateCount(); ++i) {
+    EXPECT_TRUE(f.si->equalStates(measured.getState(i), interpolated.getState(i))) << i;
+  }
+
+  const ompl::geometric::PathGeometric many = randomPath(3000);
+  ompl::geometric::PathGeometric full(many);
+  full.interpolate();
+  ASSERT_GT(full.getStateCount(), 3 * kMaxMeasuredStates) << "the resolution's states, uncapped";
+  const ompl::geometric::PathGeometric capped = measuredStates(many, &coarser);
+  EXPECT_TRUE(coarser);
+  EXPECT_LE(capped.getStateCount(), kMaxMeasuredStates + many.getStateCount());
+  EXPECT_GE(capped.getStateCount(), kMaxMeasuredStates / 2);
+  // Every state of the path is among them, in order.
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < capped.getStateCount() && next < many.getStateCount(); ++i) {
+    if (f.si->equalStates(capped.getState(i), many.getState(next))) ++next;
+  }
+  EXPECT_EQ(next, many.getStateCount());
+  const PathMeasures m = measurePath(many, *checker);
+  EXPECT_EQ(m.statesSampled, capped.getStateCount());
+  EXPECT_TRUE(m.coarserThanResolution);
 }
 
 TEST(CertifiedMotion, ZeroLengthMotionIsOneQuery) {

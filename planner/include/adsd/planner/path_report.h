@@ -20,11 +20,23 @@ struct PathMeasures {
   double minClearance = 0.0;   ///< over the states sampled along the path
   double meanClearance = 0.0;
   std::size_t statesSampled = 0;
+  bool coarserThanResolution = false;  ///< measuredStates capped the states (kMaxMeasuredStates)
 };
 
-/// \brief Measures \p path: its length, and the checker's clearance at its states after
-/// interpolating it to the space's validity-checking resolution (a copy is interpolated; the path
-/// is unchanged). The clearance queries count on the checker like any other.
+/// \brief At most this many states are measured along a path (measuredStates), unless the path
+/// has more states of its own. A path file of 20 000 random states, interpolated to the
+/// validity-checking resolution, became millions of states: `adsd view` took 25 s and 830 MB and
+/// wrote a 138 MB page, and 200 000 states would have needed some 8 GB.
+inline constexpr std::size_t kMaxMeasuredStates = 20000;
+
+/// \brief \p path's states, each motion cut into the pieces of the space's validity-checking
+/// resolution (as PathGeometric::interpolate() cuts it); when that would make more than
+/// kMaxMeasuredStates states, each motion's pieces are scaled down in proportion (at least one
+/// piece a motion), and \p coarser, when given, is set. The path itself is unchanged.
+ompl::geometric::PathGeometric measuredStates(const ompl::geometric::PathGeometric& path, bool* coarser = nullptr);
+
+/// \brief Measures \p path: its length, and the checker's clearance at measuredStates(path).
+/// The clearance queries count on the checker like any other.
 /// Any checker with a clearance: RigidBodyValidityChecker, ArmValidityCheckerBase.
 PathMeasures measurePath(const ompl::geometric::PathGeometric& path, const ompl::base::StateValidityChecker& checker);
 
@@ -45,7 +57,7 @@ struct PathLeastClearance {
 /// at t and t' is at least (c + c' - L |t' - t|) / 2; the interval of the smallest such bound is
 /// halved, by one query at its middle, until that bound is within \p relativeTolerance of the least
 /// found, or kAbsoluteToleranceFraction of the scene's scale (or \p maxQueries are spent:
-/// lowerBound says what was proven). Starts from the states measurePath measures.
+/// lowerBound says what was proven). Starts from the states measurePath measures (measuredStates).
 PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& path,
                                        const RigidBodyValidityChecker& checker, double relativeTolerance = 0.01,
                                        std::size_t maxQueries = 20000);
