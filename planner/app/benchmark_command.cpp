@@ -780,6 +780,10 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
                      "' does not exist");
   }
   error.clear();
+  if (fs::exists(directory, error) && !fs::is_directory(directory, error)) {
+    throw InputError(source + ": '" + directory.string() + "' is a file, not a directory to write the results in");
+  }
+  error.clear();
   fs::create_directory(directory, error);
   if (error || !fs::is_directory(directory) || ::access(directory.c_str(), W_OK) != 0) {
     throw InputError(source + ": cannot write in directory '" + directory.string() + "'" +

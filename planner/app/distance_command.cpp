@@ -151,6 +151,11 @@ std::vector<io::PosePair> readPoses(const std::string& source) {
     std::error_code ec;
     if (!std::filesystem::exists(source, ec)) throw InputError(source + ": no such file");
     if (std::filesystem::is_directory(source, ec)) throw InputError(source + ": is a directory, not a pose file");
+    // Read line by line: /dev/zero is one line without end, which filled the memory (stdin, `-`,
+    // is for pipes).
+    if (!std::filesystem::is_regular_file(source, ec)) {
+      throw InputError(source + ": is a device, a pipe or a socket, not a pose file (give it as - on stdin)");
+    }
     std::ifstream in(source);
     if (!in) throw InputError(source + ": cannot be opened for reading");
     poses = io::readPoseFile(in, source);

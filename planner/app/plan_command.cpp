@@ -262,8 +262,19 @@ void printSolveReport(const PlanArguments& a, const SolveReport& r) {
 }
 
 /// `adsd plan ARM.cfg`: an arm problem (arm_planning_problem.h).
+/// The outputs must not be files the problem reads: the cfg is checked with the arguments, the
+/// files it names only once it is read (`--path robot.obj` wrote the path over the robot's mesh).
+void requireOutputsApart(const PlanArguments& a, const std::vector<std::pair<std::string, std::string>>& inputs) {
+  if (a.pathFile) cli::requireDistinctFile("--path", *a.pathFile, inputs);
+  if (a.htmlFile) cli::requireDistinctFile("--html", *a.htmlFile, inputs);
+}
+
 int planArm(const PlanArguments& a) {
   const MotionBenchMakerProblem file = readMotionBenchMakerProblem(a.problem);
+  std::vector<std::pair<std::string, std::string>> inputs = {
+      {"the URDF file", file.robotPath}, {"the scene file", file.scenePath}, {"the request file", file.requestPath}};
+  if (file.srdfPath) inputs.emplace_back("the SRDF file", *file.srdfPath);
+  requireOutputsApart(a, inputs);
   ArmPlanningProblem problem(file, checkingOptions(a));
   for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';
 
@@ -357,6 +368,7 @@ int plan(const std::vector<std::string>& args) {
   if (isArmProblemFile(a.problem)) return planArm(a);
   const ProblemFile file = readProblemFile(a.problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd plan: warning: " << w << '\n';
+  requireOutputsApart(a, {{"the robot mesh", file.robotPath}, {"the world mesh", file.worldPath}});
 
   PlanningProblem problem(file, checkingOptions(a));
   for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';

@@ -107,6 +107,9 @@ void readPathLines(const std::string& file,
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
     const std::string where = file + ":" + std::to_string(number) + ": ";
+    // A UTF-8 byte-order mark, which Windows editors write, is no part of the first line: left in,
+    // it was quoted invisibly as part of a number ("'-6' is not a finite number").
+    if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
     const std::size_t first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos) continue;
     if (line[first] == '#') {
@@ -249,6 +252,11 @@ CheckingOptions showingOptions() {
 /// `adsd view ARM.cfg`: the arm viewer (arm_viewer_html.h).
 int viewArm(const ViewArguments& a) {
   const MotionBenchMakerProblem file = readMotionBenchMakerProblem(a.problem);
+  // The files the cfg names, once it is read (the cfg itself was checked with the arguments).
+  std::vector<std::pair<std::string, std::string>> inputs = {
+      {"the URDF file", file.robotPath}, {"the scene file", file.scenePath}, {"the request file", file.requestPath}};
+  if (file.srdfPath) inputs.emplace_back("the SRDF file", *file.srdfPath);
+  cli::requireDistinctFile("--html", a.html, inputs);
   ArmPlanningProblem problem(file, showingOptions());
   for (const std::string& w : problem.warnings()) std::cerr << "adsd view: warning: " << w << '\n';
   // As `adsd plan` does before solving: the space's validity-checking resolution.
@@ -274,6 +282,7 @@ int view(const std::vector<std::string>& args) {
   if (!a) return 0;
   if (isArmProblemFile(a->problem)) return viewArm(*a);
   const ProblemFile file = readProblemFile(a->problem);
+  cli::requireDistinctFile("--html", a->html, {{"the robot mesh", file.robotPath}, {"the world mesh", file.worldPath}});
   for (const std::string& w : file.warnings) std::cerr << "adsd view: warning: " << w << '\n';
   PlanningProblem problem(file, showingOptions());
   for (const std::string& w : problem.warnings()) std::cerr << "adsd view: warning: " << w << '\n';

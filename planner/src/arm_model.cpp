@@ -190,6 +190,10 @@ std::string resolveMeshPath(const std::string& uri, const fs::path& urdfDir, con
   fs::path p = uri.rfind(file, 0) == 0 ? fs::path(uri.substr(file.size())) : fs::path(uri);
   if (p.is_relative()) p = urdfDir / p;
   std::error_code ec;
+  if (fs::is_directory(p, ec)) throw InputError(where + ": mesh '" + uri + "' is a directory (" + p.string() + ")");
+  if (fs::exists(p, ec) && !fs::is_regular_file(p, ec)) {
+    throw InputError(where + ": mesh '" + uri + "' is a device, a pipe or a socket, not a file (" + p.string() + ")");
+  }
   if (!fs::is_regular_file(p, ec)) throw InputError(where + ": mesh '" + uri + "' not found (" + p.string() + ")");
   return p.string();
 }

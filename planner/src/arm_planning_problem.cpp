@@ -26,6 +26,9 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 bool isArmProblemFile(const std::string& path) {
+  // Not a regular file (/dev/zero, one line without end): readProblemFile refuses it by name.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
   std::ifstream in(path);
   if (!in) return false;
   std::string line, section;
@@ -91,6 +94,9 @@ void requireFile(const std::string& path, const SourceLocation& where, const cha
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(where.describe() + ": " + what + " '" + path + "' is a directory");
+  }
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(where.describe() + ": " + what + " '" + path + "' is a device, a pipe or a socket, not a file");
   }
   if (!std::filesystem::is_regular_file(path, ec)) {
     // A file under the robots' cache is one the shipped problems expect fetch_robots.sh to have

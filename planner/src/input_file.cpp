@@ -17,6 +17,8 @@ std::string readInputFile(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path + ": " + what + " does not exist");
   if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a " + what);
+  // Read whole: a device or a pipe (/dev/zero) would be read without end, to the memory's limit.
+  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": is a device, a pipe or a socket, not a " + what);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the " + what);
   std::ostringstream buffer;

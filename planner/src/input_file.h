@@ -7,8 +7,8 @@
 
 namespace adsd::planner {
 
-/// \brief The whole of the file at \p path; a missing file, a directory or an unreadable file is
-/// an InputError naming it as \p what ("scene file").
+/// \brief The whole of the file at \p path; a missing file, a directory, a device or a pipe, or an
+/// unreadable file is an InputError naming it as \p what ("scene file").
 std::string readInputFile(const std::string& path, const std::string& what);
 
 /// \brief Removes a UTF-8 byte-order mark, which Windows editors write, from the start of \p text:

@@ -678,6 +678,8 @@ ProblemFile readProblemFile(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path + ": problem file does not exist");
   if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a problem file");
+  // Read line by line: /dev/zero is one line without end, which filled the memory.
+  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": is a device, a pipe or a socket, not a problem file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the problem file");
   return parseProblemFile(in, path, fs::path(path).parent_path().string());

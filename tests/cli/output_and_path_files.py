@@ -11,8 +11,9 @@ directory that does not exist: exit status 2 with one line on stderr naming the 
 stdout (no plan was made first). `adsd view` of a rigid problem's path file: a yaw outside
 [-pi, pi] (as tools that write [0, 2 pi) or unwrapped angles give it) and a comment after a
 state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
-no page is written. A start in collision is refused by `adsd plan` and shown, with a warning
-naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory.
+no page is written; a byte-order mark before it is skipped. A start in collision is refused by `adsd plan` and shown, with a warning
+naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory, and says so of a file. Outputs
+over the meshes a problem file names, and inputs without end (/dev/zero), are refused.
 `adsd plan`'s least clearance along the path, between its states too, finds where a discrete path
 steps over the thin wall.
 """
@@ -74,6 +75,30 @@ def main():
                        f"adsd plan: error: --html: '{both}' is the --path file")
         check(pathlib.Path(office).read_bytes() == before, "the problem file was changed")
         check(not os.path.exists(both), "a refused plan wrote " + both)
+        # Nor the meshes the problem file names: `--path office_robot.obj` wrote the path over the
+        # robot, and the next run found no triangles in it.
+        robot = os.path.join(os.path.dirname(office), "office_robot.obj")
+        world = os.path.join(os.path.dirname(office), "office_env.obj")
+        meshes = {robot: pathlib.Path(robot).read_bytes(), world: pathlib.Path(world).read_bytes()}
+        expect_refused(adsd, ["plan", office, "--seed", "1", "--time", "1", "--path", robot], work,
+                       f"adsd plan: error: --path: '{robot}' is the robot mesh")
+        expect_refused(adsd, ["plan", office, "--seed", "1", "--time", "1", "--html", world], work,
+                       f"adsd plan: error: --html: '{world}' is the world mesh")
+        expect_refused(adsd, ["view", office, "--html", robot], work,
+                       f"adsd view: error: --html: '{robot}' is the robot mesh")
+        check(all(pathlib.Path(m).read_bytes() == b for m, b in meshes.items()), "a problem's mesh was changed")
+
+        # Inputs that never end: /dev/zero is one line without end, read to the memory's limit
+        # ("internal error: std::bad_alloc" under a 2 GB limit).
+        for command in ("plan", "view", "benchmark"):
+            extra = ["--html", os.path.join(work, "zero.html")] if command == "view" else []
+            expect_refused(adsd, [command, "/dev/zero"] + extra, work,
+                           f"adsd {command}: error: /dev/zero: is a device, a pipe or a socket, not a problem file")
+        expect_refused(adsd, ["distance", robot, world, "--poses", "/dev/zero"], work,
+                       "adsd distance: error: /dev/zero: is a device, a pipe or a socket, not a pose file")
+        # `--out` naming a file: said so, where it read "cannot write in directory ...: File exists".
+        expect_refused(adsd, ["benchmark", office, "--runs", "1", "--time", "1", "--out", office], work,
+                       f"adsd benchmark: error: --out: '{office}' is a file, not a directory")
 
         # OMPL's FMT* and BFMT* crashed (a segmentation fault) with the clearance objective; TRRT
         # and BiTRRT timed out with it on every problem (they keep the objective's cost low).
@@ -87,6 +112,14 @@ def main():
         r = run(adsd, ["view", office, "--path", turned, "--html", page], work)
         check(r.returncode == 0, f"view of yaws outside [-pi, pi]: exit {r.returncode} ({r.stderr.strip()})")
         check(os.path.isfile(page), "view of yaws outside [-pi, pi]: no page written")
+        # A path file beginning with a UTF-8 byte-order mark, as Windows editors write it: the mark
+        # was read as part of the first number ("'\ufeff-6' is not a finite number").
+        marked = os.path.join(work, "marked.path")
+        pathlib.Path(marked).write_bytes(b"\xef\xbb\xbf" + pathlib.Path(turned).read_bytes())
+        m = run(adsd, ["view", office, "--path", marked, "--html", os.path.join(work, "marked.html")], work)
+        check(m.returncode == 0 and [line for line in m.stdout.splitlines() if line.startswith("clearance")] ==
+              [line for line in r.stdout.splitlines() if line.startswith("clearance")],
+              f"view of a path file with a byte-order mark: exit {m.returncode} ({m.stderr.strip()})")
         # The same turns written within [-pi, pi]: the same states, so the same clearance printed.
         wrapped = os.path.join(work, "wrapped.path")
         pathlib.Path(wrapped).write_text(f"-6 2.5 0\n0 0 {4 - 2 * math.pi!r}\n6 -2.5 {math.pi / 2!r}\n")
