@@ -164,6 +164,19 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
                              " not applied (not supported): the states checked are without it");
   };
   auto hasEntries = [](const Field& f) { return f.node.IsDefined() && !f.node.IsNull() && f.node.size() > 0; };
+  // Keys a moveit_msgs/PlanningScene (and its World) does not have: a mistyped `wrld:` left the
+  // scene without obstacles, and a file that is no scene at all was taken as an empty one, both
+  // without a word.
+  auto unknownKeys = [&](const Field& map, std::initializer_list<const char*> known, const char* message) {
+    for (const Field& f : doc.keysOutside(map, known)) {
+      scene.warnings.push_back(sourceName + ":" + std::to_string(f.line) + ": unknown key '" + f.path + "' ignored (" +
+                               message + ")");
+    }
+  };
+  unknownKeys(root,
+              {"name", "robot_state", "robot_model_name", "fixed_frame_transforms", "allowed_collision_matrix",
+               "link_padding", "link_scale", "object_colors", "world", "is_diff"},
+              "not a field of a moveit_msgs/PlanningScene");
   if (const Field state = doc.child(root, "robot_state"); state.node.IsDefined() && !state.node.IsNull()) {
     const Field joints = doc.child(state, "joint_state");
     if (joints.node.IsDefined()) scene.defaultJointValues = yaml::jointState(doc, joints).values;
@@ -199,6 +212,7 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
 
   const Field world = doc.child(root, "world");
   if (!world.node.IsDefined() || world.node.IsNull()) return scene;  // a scene without obstacles
+  unknownKeys(world, {"collision_objects", "octomap"}, "not a field of a moveit_msgs/PlanningSceneWorld");
   if (const Field octomap = doc.child(world, "octomap"); octomap.node.IsDefined()) {
     doc.fail(octomap, "octomaps are not supported");
   }

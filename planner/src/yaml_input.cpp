@@ -135,6 +135,22 @@ void Document::requireMap(const Field& f) const {
   if (!f.node.IsMap()) fail(f, std::string("expected a map, got ") + kindName(f.node));
 }
 
+std::vector<Field> Document::keysOutside(const Field& map, std::initializer_list<const char*> known) const {
+  requireMap(map);
+  std::vector<Field> outside;
+  for (auto it = map.node.begin(); it != map.node.end(); ++it) {
+    const YAML::Node& key = it->first;
+    Field f{it->second, map.path, static_cast<int>(key.Mark().line) + 1};
+    if (f.line < 1) f.line = map.line;
+    if (!key.IsScalar()) fail(f, "a key that is not a name");
+    const std::string name = key.Scalar();
+    if (std::find_if(known.begin(), known.end(), [&](const char* k) { return name == k; }) != known.end()) continue;
+    f.path = map.path.empty() ? name : map.path + "." + name;
+    outside.push_back(std::move(f));
+  }
+  return outside;
+}
+
 Field Document::child(const Field& map, const std::string& key) const {
   requireMap(map);
   const YAML::Node& parent = map.node;
@@ -210,7 +226,10 @@ Vec3 Document::point(const Field& f) const {
     if (f.node.size() != 3) fail(f, "expected 3 coordinates [x, y, z], got " + std::to_string(f.node.size()));
     for (int i = 0; i < 3; ++i) p[i] = number(element(f, static_cast<std::size_t>(i)));
   } else {
-    requireMap(f);
+    // A key other than x, y, z is a mistyped one (`yy:`), whose coordinate would silently be 0.
+    if (const std::vector<Field> other = keysOutside(f, {"x", "y", "z"}); !other.empty()) {
+      fail(other.front(), "not a coordinate of a point (x, y, z)");
+    }
     const char* names[] = {"x", "y", "z"};
     // A coordinate left out of a map is 0, as in a ROS message.
     for (int i = 0; i < 3; ++i) {
@@ -229,7 +248,11 @@ Eigen::Quaterniond Document::quaternion(const Field& f) const {
     if (f.node.size() != 4) fail(f, "expected 4 components [x, y, z, w], got " + std::to_string(f.node.size()));
     for (int i = 0; i < 4; ++i) q[i] = number(element(f, static_cast<std::size_t>(i)));
   } else {
-    requireMap(f);
+    // `W: 1` for `w: 1` left w at 0, and (1, 0, 0, 0) passed the unit check: a half turn about x
+    // in place of a quarter turn.
+    if (const std::vector<Field> other = keysOutside(f, {"x", "y", "z", "w"}); !other.empty()) {
+      fail(other.front(), "not a component of a quaternion (x, y, z, w)");
+    }
     const char* names[] = {"x", "y", "z", "w"};
     for (int i = 0; i < 4; ++i) {
       const Field c = child(f, names[i]);

@@ -7,8 +7,10 @@
 /// motion_plan_request_yaml.cpp). Not installed.
 
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <yaml-cpp/yaml.h>
@@ -55,6 +57,9 @@ class Document {
   std::size_t sequenceLength(const Field& f) const;
   /// \brief Checks the field is a map.
   void requireMap(const Field& f) const;
+  /// \brief The keys of map \p map that are not among \p known, each as the child field it
+  /// names (its path and line), in the file's order; a key that is not a scalar is an error.
+  std::vector<Field> keysOutside(const Field& map, std::initializer_list<const char*> known) const;
 
   /// \brief A scalar as text (counted against the budget).
   std::string text(const Field& f) const;

@@ -204,6 +204,29 @@ TEST(PlanningSceneYamlErrors, ZeroOrNonUnitQuaternion) {
   EXPECT_NO_THROW(parsePlanningSceneYaml(withLine(26, "          orientation: [0, 0, 0, 1.0004]"), "ok.yaml"));
 }
 
+// A mistyped key of a point or a quaternion left its value at 0: `W: 1` made (1, 0, 0, 0), a unit
+// quaternion turning the object half a turn where a quarter was meant (adversarial sweep).
+TEST(PlanningSceneYamlErrors, MistypedPointOrQuaternionKey) {
+  EXPECT_ERROR(withLine(13, "        orientation: {x: 0.7071067811865476, y: 0, z: 0, W: 0.7071067811865476}"), ":13:",
+               "field 'world.collision_objects[0].pose.orientation.W': not a component of a quaternion (x, y, z, w)");
+  EXPECT_ERROR(withLine(12, "        position: {x: 1, yy: 0, z: 0}"), ":12:",
+               "field 'world.collision_objects[0].pose.position.yy': not a coordinate of a point (x, y, z)");
+}
+
+// A key a PlanningScene does not have: `wrld:` for `world:` read as a scene without obstacles, and
+// a YAML file that is no scene at all as an empty one, without a word (adversarial sweep).
+TEST(PlanningSceneYaml, UnknownKeysAreWarnedOf) {
+  EXPECT_TRUE(parsePlanningSceneYaml(kScene, "s.yaml").warnings.empty());
+  const std::vector<std::string> typo = parsePlanningSceneYaml("name: t\nwrld:\n  collision_objects: []\n", "t.yaml").warnings;
+  ASSERT_EQ(typo.size(), 1u);
+  EXPECT_EQ(typo[0], "t.yaml:2: unknown key 'wrld' ignored (not a field of a moveit_msgs/PlanningScene)");
+  const std::vector<std::string> inWorld =
+      parsePlanningSceneYaml("world:\n  collision_objects: []\n  colision_objects: []\n", "w.yaml").warnings;
+  ASSERT_EQ(inWorld.size(), 1u);
+  EXPECT_EQ(inWorld[0],
+            "w.yaml:3: unknown key 'world.colision_objects' ignored (not a field of a moveit_msgs/PlanningSceneWorld)");
+}
+
 TEST(PlanningSceneYamlErrors, TriangleIndexOutOfRange) {
   EXPECT_ERROR(withLine(40, "            - vertex_indices: [0, 1, 3]"), ":40:",
                "vertex_indices[2]': '3' is out of range (at most 2)");
