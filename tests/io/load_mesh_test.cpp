@@ -947,6 +947,29 @@ TEST(LoadMeshBadInput, HeaderCountsBeyondTheFileAreTruncations) {
   EXPECT_NE(cut.find("truncated binary PLY: vertex 4 of 4294967294"), std::string::npos) << cut;
 }
 
+// Data past what the header declares: a face count too low dropped the faces beyond it without a
+// word, where the same OFF file is refused; binary bytes past the last record, other than a line
+// end, too; and a property declared twice (which x is the coordinate?) (adversarial sweep).
+TEST(LoadMeshBadInput, PlyDataBeyondTheHeaderAndRepeatedProperties) {
+  TempDir dir;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string data = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n";
+  EXPECT_EQ(loadMesh(dir.write("fine.ply", header + data + "\n  \n")).triangleCount(), 1u);
+  const std::string more = dir.write("more.ply", header + data + "3 0 1 3\n3 1 2 3\n");
+  EXPECT_EQ(loadError(more), more + ":15: unexpected '3' after the data the header declares (the last of 1 'face' "
+                                    "lines): a count in the header too low?");
+  std::string binary = binaryPly(true);
+  EXPECT_EQ(loadMesh(dir.write("newline.ply", binary + "\n")).triangleCount(), 1u);
+  const std::string tail = dir.write("tail.ply", binary + "3 junk");
+  EXPECT_EQ(loadError(tail),
+            tail + ": 6 bytes after the last record the header declares: a count in the header too low?");
+  std::string twice = header + data;
+  twice.replace(twice.find("property float y\n"), 17, "property float x\nproperty float y\n");
+  const std::string repeated = dir.write("twice.ply", twice);
+  EXPECT_EQ(loadError(repeated), repeated + ":5: element vertex declares property x twice");
+}
+
 // OFF files that are malformed: each named with its line. (Assimp 5.2's OFF reader, used before
 // issue 16, clamped out-of-range indices and zero-filled missing vertices without a word.)
 TEST(LoadMeshBadInput, MalformedOff) {

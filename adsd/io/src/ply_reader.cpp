@@ -101,8 +101,10 @@ class PlyChecker {
     if (vertexCount_ >= UINT32_MAX) throw InputError(path_ + ": more than 2^32 - 1 vertices");
     if (format_ == Format::ascii) {
       walkAscii();
+      requireNothingAfterAscii();
     } else {
       walkBinary();
+      requireNothingAfterBinary();
     }
     return std::move(soup_);
   }
@@ -155,6 +157,12 @@ class PlyChecker {
         }
         if (p.valueType.bytes == 0) throw InputError(at() + "unknown property type in " + quoteToken(line));
         if (!isIdentifier(p.name)) throw InputError(at() + "property name " + quoteToken(p.name) + " is not an identifier");
+        // Two x properties: which is the coordinate? The last one was taken without a word.
+        for (const Property& q : elements_.back().properties) {
+          if (q.name == p.name) {
+            throw InputError(at() + "element " + elements_.back().name + " declares property " + p.name + " twice");
+          }
+        }
         elements_.back().properties.push_back(p);
       }
       // Any other line is ignored, as assimp ignores it (Blender 2.4 wrote its banner without
@@ -307,6 +315,32 @@ class PlyChecker {
         if (isVertex) soup_.points.push_back(point);
       }
     }
+  }
+
+  /// The data ends with the instances the header declares: more lines (a face count too low, which
+  /// dropped the faces beyond it without a word) are an error, as in OFF. Blank lines may follow.
+  void requireNothingAfterAscii() {
+    std::string_view line;
+    while (lines_.next(line)) {
+      const std::vector<std::string_view> t = splitWhitespace(line);
+      if (t.empty()) continue;
+      const std::string last = elements_.empty() ? std::string("header") : "'" + elements_.back().name + "'";
+      throw InputError(at() + "unexpected " + quoteToken(t[0]) + " after the data the header declares (" +
+                       (elements_.empty() ? std::string("no elements") : "the last of " +
+                                                std::to_string(elements_.back().count) + " " + last + " lines") +
+                       "): a count in the header too low?");
+    }
+  }
+
+  /// The same for binary data: bytes past the last record, other than a line end or padding some
+  /// writers leave, are an error.
+  void requireNothingAfterBinary() const {
+    const std::string_view rest = bytes_.substr(pos_);
+    const bool padding =
+        std::all_of(rest.begin(), rest.end(), [](char c) { return c == '\n' || c == '\r' || c == ' ' || c == '\0'; });
+    if (padding) return;
+    throw InputError(path_ + ": " + std::to_string(rest.size()) +
+                     " bytes after the last record the header declares: a count in the header too low?");
   }
 
   /// Reads one binary scalar at pos_ (bounds already checked); integers only are decoded.
