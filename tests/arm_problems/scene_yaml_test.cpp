@@ -217,7 +217,8 @@ TEST(PlanningSceneYamlErrors, MistypedPointOrQuaternionKey) {
 // a YAML file that is no scene at all as an empty one, without a word (adversarial sweep).
 TEST(PlanningSceneYaml, UnknownKeysAreWarnedOf) {
   EXPECT_TRUE(parsePlanningSceneYaml(kScene, "s.yaml").warnings.empty());
-  const std::vector<std::string> typo = parsePlanningSceneYaml("name: t\nwrld:\n  collision_objects: []\n", "t.yaml").warnings;
+  const std::vector<std::string> typo =
+      parsePlanningSceneYaml("name: t\nwrld:\n  collision_objects: []\n", "t.yaml").warnings;
   ASSERT_EQ(typo.size(), 1u);
   EXPECT_EQ(typo[0], "t.yaml:2: unknown key 'wrld' ignored (not a field of a moveit_msgs/PlanningScene)");
   const std::vector<std::string> inWorld =

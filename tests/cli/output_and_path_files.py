@@ -11,9 +11,10 @@ directory that does not exist: exit status 2 with one line on stderr naming the 
 stdout (no plan was made first). `adsd view` of a rigid problem's path file: a yaw outside
 [-pi, pi] (as tools that write [0, 2 pi) or unwrapped angles give it) and a comment after a
 state's numbers are taken; a state outside the problem's bounds is refused naming its line, and
-no page is written; a byte-order mark before it is skipped. A start in collision is refused by `adsd plan` and shown, with a warning
-naming its line, by `adsd view`. `adsd benchmark --out` does not make a missing parent directory, and says so of a file. Outputs
-over the meshes a problem file names, and inputs without end (/dev/zero), are refused.
+no page is written; a byte-order mark before the first state is skipped. A start in collision is
+refused by `adsd plan` and shown, with a warning naming its line, by `adsd view`. `adsd benchmark
+--out` does not make a missing parent directory, and says so of a file. Outputs over the meshes a
+problem file names, and inputs without end (/dev/zero), are refused.
 `adsd plan`'s least clearance along the path, between its states too, finds where a discrete path
 steps over the thin wall.
 """
