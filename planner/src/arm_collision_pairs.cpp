@@ -83,12 +83,25 @@ std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmMode
   return out;
 }
 
-void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, ArmCollisionPairs& pairs) {
+std::vector<std::string> disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath,
+                                              ArmCollisionPairs& pairs) {
   const std::string text = readInputFile(srdfPath, "SRDF file");
   TiXmlDocument doc;
   xml::parseXml(srdfPath, text, doc);
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(srdfPath + ": no <robot> element: not an SRDF file");
+  // A URDF named as the SRDF has a <robot> too, and no <disable_collisions>: it was read as an
+  // SRDF disabling nothing, without a word.
+  if (const TiXmlElement* link = robot->FirstChildElement("link")) {
+    throw InputError(srdfPath + ":" + std::to_string(link->Row()) +
+                     ": a <link> element: this is a URDF, not an SRDF (which holds <disable_collisions>)");
+  }
+  std::vector<std::string> warnings;
+  const char* name = robot->Attribute("name");
+  if (name != nullptr && model.name != name) {
+    warnings.push_back(srdfPath + ":" + std::to_string(robot->Row()) + ": the SRDF is for robot '" + name +
+                       "', the URDF " + model.sourceFile + " is robot '" + model.name + "' (read on, as MoveIt does)");
+  }
   for (const TiXmlElement* e = robot->FirstChildElement("disable_collisions"); e;
        e = e->NextSiblingElement("disable_collisions")) {
     const std::string where = srdfPath + ":" + std::to_string(e->Row());
@@ -106,6 +119,7 @@ void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, Ar
     const char* reason = e->Attribute("reason");
     if (a != b) pairs.disable(a, b, reason ? reason : "SRDF");
   }
+  return warnings;
 }
 
 void writeSrdf(const ArmModel& model, const ArmCollisionPairs& pairs, const std::string& srdfPath) {

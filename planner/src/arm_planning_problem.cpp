@@ -148,6 +148,7 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);
   allowedPlanningTime_ = request.allowedPlanningTime;
   scene_ = std::make_shared<const ArmScene>(makeArmScene(model_, sceneFile.objects, file.srdfPath.value_or("")));
+  warnings_.insert(warnings_.end(), scene_->warnings.begin(), scene_->warnings.end());
 
   // The joint vectors, in the model's order.
   const std::size_t dof = model_->dof();

@@ -8,8 +8,8 @@ namespace adsd::planner {
 
 ArmScene makeArmScene(std::shared_ptr<const ArmModel> model, const std::vector<Mesh>& environment,
                       const std::string& srdfPath) {
-  ArmScene scene{model, ArmCollisionPairs(*model), {}};
-  if (!srdfPath.empty()) disablePairsFromSrdf(*model, srdfPath, scene.selfPairs);
+  ArmScene scene{model, ArmCollisionPairs(*model), {}, {}};
+  if (!srdfPath.empty()) scene.warnings = disablePairsFromSrdf(*model, srdfPath, scene.selfPairs);
   // Obstacle pieces about the size of the largest link (kPieceDiagonalPerRobotDiameter): the
   // broad phase then skips the pieces far from every link (rigid_body_scene.h says why).
   double linkDiameter = 0.0;

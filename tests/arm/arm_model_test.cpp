@@ -222,6 +222,29 @@ TEST(ArmCollisionPairs, SrdfDisablesItsPairsAndRoundTrips) {
   EXPECT_THROW(disablePairsFromSrdf(m, dir.path("absent.srdf"), pairs), InputError);
 }
 
+// A URDF named as the SRDF was read as an SRDF disabling nothing, and an SRDF of another robot
+// without a word (adversarial sweep): the first is refused, the second warned of, as MoveIt does.
+TEST(ArmCollisionPairs, SrdfThatIsAUrdfOrOfAnotherRobot) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  test::ScratchDir dir;
+  ArmCollisionPairs pairs(m);
+  const std::string urdf = armTestData("slider_arm.urdf");
+  try {
+    disablePairsFromSrdf(m, urdf, pairs);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(": a <link> element: this is a URDF, not an SRDF"), std::string::npos)
+        << e.what();
+  }
+  const std::string other = dir.write("other.srdf", "<robot name=\"other\">\n"
+                                                    "<disable_collisions link1=\"tip\" link2=\"base\"/>\n</robot>\n");
+  const std::vector<std::string> warnings = disablePairsFromSrdf(m, other, pairs);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], other + ":1: the SRDF is for robot 'other', the URDF " + m.sourceFile +
+                             " is robot 'slider_arm' (read on, as MoveIt does)");
+  EXPECT_TRUE(disablePairsFromSrdf(m, dir.write("own.srdf", "<robot name=\"slider_arm\"/>"), pairs).empty());
+}
+
 // The small arm's three enabled pairs can never touch (the arm turns 0.1 above the base's top and
 // holds the tip 0.5 from the carriage), so the sampling pass disables all as "Never"; the SRDF it
 // writes says so.

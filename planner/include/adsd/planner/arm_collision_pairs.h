@@ -50,8 +50,11 @@ std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmMode
 
 /// \brief Disables every pair of an SRDF file's `<disable_collisions link1="" link2="" reason=""/>`
 /// entries (MoveIt's format; other elements are ignored). Throws adsd::InputError naming the file
-/// and line when it is not XML, has no `<robot>` element, or names a link the model lacks.
-void disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath, ArmCollisionPairs& pairs);
+/// and line when it is not XML, has no `<robot>` element, is a URDF (its `<robot>` has `<link>`
+/// elements), or names a link the model lacks. Returns its warnings, one line each: a `<robot
+/// name="">` other than the model's (MoveIt logs that as an error and reads on).
+std::vector<std::string> disablePairsFromSrdf(const ArmModel& model, const std::string& srdfPath,
+                                              ArmCollisionPairs& pairs);
 
 /// \brief Writes the disabled pairs as an SRDF file (a `<robot name="">` with one
 /// `<disable_collisions>` per pair), which disablePairsFromSrdf() and MoveIt read, through a

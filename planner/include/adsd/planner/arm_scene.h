@@ -4,6 +4,7 @@
 /// its links that are checked, and a static environment.
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "adsd/mesh.h"
@@ -21,6 +22,8 @@ struct ArmScene {
   ArmCollisionPairs selfPairs;
   /// Obstacles, world frame. May be empty (self-collision only).
   std::vector<Mesh> environment;
+  /// What reading the SRDF warned of (disablePairsFromSrdf), one line each.
+  std::vector<std::string> warnings;
 };
 
 /// \brief An ArmScene with adjacency-disabled self pairs (and an SRDF's, when \p srdfPath is not
