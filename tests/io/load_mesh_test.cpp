@@ -747,10 +747,17 @@ TEST(LoadMeshBadInput, ColladaIndexListThatAssimpWouldReadForever) {
     const std::string message = loadError(dir.write("bad_list.dae", dae));
     EXPECT_NE(message.find("bad_list.dae:16: the index list <p> holds "), std::string::npos) << list << ": " << message;
   }
-  // Signs, line breaks, a blank before '>' in the closing tag, <p/>, and <p> in a comment are fine.
+  // A plus sign, line breaks, a blank before '>' in the closing tag, <p/>, and <p> in a comment are
+  // fine.
   std::string fine = good;
   fine.replace(fine.find(triangles), triangles.size(), "<!-- <p>\"</p> --><p>\n+0 1\r\n 2 </p >");
   EXPECT_EQ(loadMesh(dir.write("fine.dae", fine)).triangleCount(), 1u);
+  // A negative index was taken as a vertex beyond the list, one more vertex than the file has
+  // (adversarial sweep).
+  std::string negative = good;
+  negative.replace(negative.find(triangles), triangles.size(), "<p>0 1 -2</p>");
+  const std::string file = dir.write("negative.dae", negative);
+  EXPECT_EQ(loadError(file), file + ":16: the index list <p> holds a negative index (indices start at 0)");
 }
 
 /// A zip archive of one member, \p name holding \p contents, laid out as archivers write one: its

@@ -26,10 +26,11 @@ namespace adsd::io::detail {
 
 namespace {
 
-/// What assimp's index reader steps over: digits, a sign, and the whitespace it skips between
-/// numbers (space, tab, CR, LF).
+/// What assimp's index reader steps over: digits, a plus sign, and the whitespace it skips between
+/// numbers (space, tab, CR, LF). A minus sign, which it reads too, makes a negative index, which
+/// it took as a vertex beyond the list (an extra vertex, 371 of 370) without a word.
 bool isIndexListCharacter(char c) {
-  return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == ' ' || c == '\t' || c == '\r' || c == '\n';
+  return (c >= '0' && c <= '9') || c == '+' || c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
 /// True when \p text at \p at starts the start tag of an element named exactly "p".
@@ -148,8 +149,12 @@ void requireIntegerIndexLists(const std::string& path, std::string_view text) {
       at = end;
       continue;
     }
+    const std::string where = path + ":" + std::to_string(lineOf(text, i));
+    if (i < text.size() && text[i] == '-') {
+      throw InputError(where + ": the index list <p> holds a negative index (indices start at 0)");
+    }
     const std::string what = i < text.size() ? quoteToken(text.substr(i, 1)) : std::string("the end of the file");
-    throw InputError(path + ":" + std::to_string(lineOf(text, i)) + ": the index list <p> holds " + what +
+    throw InputError(where + ": the index list <p> holds " + what +
                      "; expected integers separated by whitespace up to </p>");
   }
 }
