@@ -4,9 +4,13 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <iostream>
 #include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
+
+#include <console_bridge/console.h>
 
 #include <tinyxml.h>
 #include <urdf_parser/urdf_parser.h>
@@ -253,15 +257,16 @@ Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::v
 /// for collisions. So every element of the XML must have come through.
 std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& urdfDir,
                                       const std::vector<std::string>& search, const std::string& path,
-                                      const UrdfOutline& outline) {
+                                      const UrdfOutline& outline, const std::string& urdfdomSaid) {
   std::vector<urdf::CollisionSharedPtr> elements = link.collision_array;
   if (elements.empty() && link.collision) elements.push_back(link.collision);
   const std::vector<int>& lines = outline.collisionLines.at(link.name);
   const std::string linkWhere = path + ":" + std::to_string(outline.linkLine.at(link.name)) + ": link '" + link.name + "'";
   if (elements.size() != lines.size()) {
     throw InputError(linkWhere + ": urdfdom read " + std::to_string(elements.size()) + " of its " +
-                     std::to_string(lines.size()) + " <collision> elements (its message is above); refused " +
-                     "rather than leave the link unchecked");
+                     std::to_string(lines.size()) + " <collision> elements (urdfdom: " +
+                     (urdfdomSaid.empty() ? std::string("no reason given") : urdfdomSaid) +
+                     "); refused rather than leave the link unchecked");
   }
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
@@ -404,13 +409,61 @@ void resolveMimicJoints(const urdf::ModelInterface& urdf, const std::string& urd
   }
 }
 
+/// What urdfdom reports through console_bridge while it parses one file. Its errors were printed
+/// above our one-line error, several lines each with urdfdom's own source lines ("at line 440 in
+/// ./urdf_parser/src/joint.cpp", easily taken for a line of the URDF); they join our message
+/// instead. Warnings are still printed, on one line naming the file.
+class UrdfdomMessages : public console_bridge::OutputHandler {
+ public:
+  explicit UrdfdomMessages(const std::string& urdfPath) : urdfPath_(urdfPath) {}
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    std::string line = text;
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) {
+      errors_ += (errors_.empty() ? "" : "; ") + line;
+    } else if (level == console_bridge::CONSOLE_BRIDGE_LOG_WARN) {
+      std::cerr << urdfPath_ << ": urdfdom: " << line << '\n';
+    }
+  }
+  /// The errors reported, in order, separated by "; ".
+  const std::string& errors() const { return errors_; }
+
+ private:
+  const std::string& urdfPath_;
+  std::string errors_;
+};
+
+/// urdfdom's parse, its errors collected into \p said (those of a model it reads after all are
+/// about <collision> elements it dropped: linkCollisionMesh). console_bridge's handler is one for
+/// the process, so that two threads reading URDF files take turns.
+urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdfPath, const std::string& text,
+                                               std::string& said) {
+  static std::mutex handlerInUse;
+  const std::lock_guard<std::mutex> lock(handlerInUse);
+  UrdfdomMessages messages(urdfPath);
+  console_bridge::useOutputHandler(&messages);
+  urdf::ModelInterfaceSharedPtr urdf;
+  try {
+    urdf = urdf::parseURDF(text);
+  } catch (...) {
+    console_bridge::restorePreviousOutputHandler();
+    throw;
+  }
+  console_bridge::restorePreviousOutputHandler();
+  said = messages.errors();
+  if (!urdf || !urdf->getRoot()) {
+    throw InputError(urdfPath + ": urdfdom cannot read this URDF" + (said.empty() ? std::string() : ": " + said));
+  }
+  return urdf;
+}
+
 }  // namespace
 
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath) {
   const std::string text = readInputFile(urdfPath, "URDF file");
   const UrdfOutline outline = checkTreeShape(urdfPath, text);
-  const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(text);
-  if (!urdf || !urdf->getRoot()) throw InputError(urdfPath + ": urdfdom cannot read this URDF (its message is above)");
+  std::string urdfdomSaid;
+  const urdf::ModelInterfaceSharedPtr urdf = parseWithUrdfdom(urdfPath, text, urdfdomSaid);
   const fs::path urdfDir = fs::absolute(fs::path(urdfPath)).parent_path();
 
   ArmModel model;
@@ -441,7 +494,7 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
         model.joints.back().active = static_cast<int>(model.activeJoints.size() - 1);
       }
     }
-    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath, outline);
+    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath, outline, urdfdomSaid);
     model.links.push_back(std::move(link));
 
     std::vector<urdf::JointSharedPtr> childJoints = visit.link->child_joints;

@@ -436,14 +436,21 @@ TEST(ArmModel, CollisionElementsUrdfdomCannotReadAreRefused) {
   };
   for (const std::string& collision : unreadable) {
     const std::string path = dir.write("dropped.urdf", robot(collision));
+    // urdfdom's reason joins the one line, on no other line.
+    testing::internal::CaptureStderr();
     try {
       readUrdf(path);
       ADD_FAILURE() << collision << ": no error";
     } catch (const InputError& e) {
-      EXPECT_EQ(std::string(e.what()), path + ":2: link 'a': urdfdom read 1 of its 2 <collision> elements (its message "
-                                              "is above); refused rather than leave the link unchecked")
-          << collision;
+      const std::string what = e.what();
+      const std::string start = path + ":2: link 'a': urdfdom read 1 of its 2 <collision> elements (urdfdom: ";
+      const std::string end = "); refused rather than leave the link unchecked";
+      EXPECT_EQ(what.rfind(start, 0), 0u) << collision << ": " << what;
+      EXPECT_GT(what.size(), start.size() + end.size()) << "urdfdom's reason is left out: " << what;
+      EXPECT_EQ(what.compare(what.size() - end.size(), end.size(), end), 0) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     }
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << collision;
   }
 }
 
@@ -529,7 +536,21 @@ TEST(ArmModel, JointAxisOfAnyFiniteScaleIsADirection) {
   EXPECT_EQ(readUrdf(dir.write("tiny.urdf", robot("0 -1e-170 0"))).joints[0].axis, -Vec3::UnitY());
   EXPECT_TRUE(readUrdf(dir.write("diagonal.urdf", robot("1e300 1e300 0"))).joints[0].axis.isApprox(
       Vec3(1, 1, 0).normalized()));
-  // (urdfdom refuses inf and nan components itself.)
+  // urdfdom refuses inf and nan components itself: its reason joins our one line, where it was
+  // printed above it on several lines with urdfdom's own source lines ("at line 440 in
+  // ./urdf_parser/src/joint.cpp", easily taken for a line of the URDF).
+  const std::string infinite = dir.write("infinite.urdf", robot("0 0 inf"));
+  testing::internal::CaptureStderr();
+  try {
+    readUrdf(infinite);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(infinite + ": urdfdom cannot read this URDF: ", 0), 0u) << what;
+    EXPECT_NE(what.find("joint [j]"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
   const std::string zero = dir.write("zero.urdf", robot("0 0 0"));
   try {
     readUrdf(zero);
