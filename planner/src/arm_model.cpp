@@ -34,6 +34,8 @@ std::size_t ArmModel::jointIndex(const std::string& jointName) const {
 }
 
 std::pair<double, double> ArmModel::positionRange(const ArmJoint& joint) const {
+  // A joint held outside the planning group (holdJointsOutside) stands within its limits.
+  if (joint.locked) return {joint.lockedPosition, joint.lockedPosition};
   if (joint.mimicCoordinate < 0) return {joint.lower, joint.upper};
   const ArmJoint& leader = joints[activeJoints[static_cast<std::size_t>(joint.mimicCoordinate)]];
   const double a = joint.mimicMultiplier * leader.lower + joint.mimicOffset;
@@ -508,6 +510,37 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
   }
   resolveMimicJoints(*urdf, urdfPath, outline, model);
   return model;
+}
+
+void holdJointsOutside(ArmModel& model, const std::vector<std::string>& planned, const std::vector<double>& q) {
+  const auto isPlanned = [&](const std::string& name) {
+    return std::find(planned.begin(), planned.end(), name) != planned.end();
+  };
+  std::vector<int> renumbered(model.activeJoints.size(), -1);
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < model.activeJoints.size(); ++i) {
+    ArmJoint& j = model.joints[model.activeJoints[i]];
+    if (isPlanned(j.name)) {
+      renumbered[i] = static_cast<int>(kept.size());
+      kept.push_back(model.activeJoints[i]);
+    } else {
+      j.locked = true;
+      j.lockedPosition = q[i];
+    }
+  }
+  for (ArmJoint& j : model.joints) {
+    if (j.active >= 0) j.active = renumbered[static_cast<std::size_t>(j.active)];
+    if (j.mimicCoordinate < 0) continue;
+    const int leader = renumbered[static_cast<std::size_t>(j.mimicCoordinate)];
+    if (leader >= 0) {
+      j.mimicCoordinate = leader;
+    } else {
+      j.locked = true;
+      j.lockedPosition = j.mimicMultiplier * q[static_cast<std::size_t>(j.mimicCoordinate)] + j.mimicOffset;
+      j.mimicCoordinate = -1;
+    }
+  }
+  model.activeJoints = std::move(kept);
 }
 
 }  // namespace adsd::planner

@@ -4,7 +4,9 @@
 #include <charconv>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include <ompl/base/goals/GoalState.h>
@@ -16,6 +18,7 @@
 #include "adsd/planner/features.h"
 #include "adsd/planner/motion_plan_request_yaml.h"
 #include "adsd/planner/planning_scene_yaml.h"
+#include "adsd/planner/srdf_groups.h"
 #if ADSD_PLANNER_HAS_FCL
 #include "adsd/planner/fcl_arm_validity_checker.h"
 #endif
@@ -69,7 +72,10 @@ int firstLine(const Map& map, LineOf lineOf) {
 }
 
 /// Throws when a non-continuous joint of \p q lies outside its limits.
-void checkLimits(const ArmModel& model, const std::vector<double>& q, const std::string& where, const char* which) {
+/// Throws when a coordinate of \p q lies outside its joint's limits, the message beginning with
+/// whereOf(that joint's name): the line that gives its position.
+void checkLimits(const ArmModel& model, const std::vector<double>& q,
+                 const std::function<std::string(const std::string&)>& whereOf, const char* which) {
   for (std::size_t i = 0; i < model.dof(); ++i) {
     const ArmJoint& joint = model.joints[model.activeJoints[i]];
     if (joint.type == ArmJointType::continuous) continue;  // wraps: every angle is a position
@@ -81,7 +87,7 @@ void checkLimits(const ArmModel& model, const std::vector<double>& q, const std:
         return std::string(digits, std::to_chars(digits, digits + sizeof digits, x).ptr);
       };
       std::ostringstream why;
-      why << where << ": " << which << " is outside the joint limits (joint " << joint.name << " = " << text(q[i])
+      why << whereOf(joint.name) << ": " << which << " is outside the joint limits (joint " << joint.name << " = " << text(q[i])
           << ", limits [" << text(joint.lower) << ", " << text(joint.upper) << "])";
       throw InputError(why.str());
     }
@@ -151,7 +157,7 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   warnings_.insert(warnings_.end(), scene_->warnings.begin(), scene_->warnings.end());
 
   // The joint vectors, in the model's order.
-  const std::size_t dof = model_->dof();
+  std::size_t dof = model_->dof();  // fewer once the planning group is known
   start_.assign(dof, 0.0);
   goal_.assign(dof, 0.0);
   for (std::size_t i = 0; i < dof; ++i) {
@@ -171,12 +177,50 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
         unknown += (unknown.empty() ? "'" : ", '") + given + "'";
         if (const auto l = request.startLines.find(given); l != request.startLines.end() && line == 0) line = l->second;
       }
+      // Else the start state's first position: where the missing one belongs (no line was named).
+      if (line == 0 && !request.startLines.empty()) line = firstLine(request.startLines, [](int l) { return l; });
       throw InputError(at(file.requestPath, line) + ": the start state has no position for joint '" + joint +
                        "' of robot '" + model_->name + "' (neither the request's start_state nor the scene's " +
                        "robot_state gives one" +
                        (unknown.empty() ? std::string(")")
                                         : "; the start_state names " + unknown + ", which the robot lacks)"));
     }
+  }
+  // The planning group, request.groupName: as the SRDF defines it, or else the joints the goal
+  // constrains (MotionBenchMaker's requests name every joint of the group). The robot's other
+  // joints are held at the start state, as MoveIt plans: planning every joint, a humanoid's request
+  // for one arm moved its legs, its torso and its other arm too (Atlas: 27 joints for 2).
+  std::vector<std::string> planned;
+  bool fromSrdf = false;
+  if (file.srdfPath) {
+    if (std::optional<std::vector<std::string>> group = srdfGroupJoints(*model, *file.srdfPath, request.groupName)) {
+      planned = std::move(*group);
+      fromSrdf = true;
+    }
+  }
+  if (!fromSrdf) {
+    for (const auto& [joint, constraint] : request.goal) planned.push_back(joint);
+  }
+  std::size_t plannedCoordinates = 0;
+  for (std::size_t i = 0; i < dof; ++i) {
+    const std::string& name = model->joints[model->activeJoints[i]].name;
+    if (std::find(planned.begin(), planned.end(), name) != planned.end()) ++plannedCoordinates;
+  }
+  if (plannedCoordinates > 0 && plannedCoordinates < dof) {
+    std::map<std::string, double> startOf;
+    for (std::size_t i = 0; i < dof; ++i) startOf[model->joints[model->activeJoints[i]].name] = start_[i];
+    holdJointsOutside(*model, planned, start_);
+    start_.clear();
+    for (const std::size_t j : model->activeJoints) start_.push_back(startOf.at(model->joints[j].name));
+    if (!fromSrdf) {
+      const int line = firstLine(request.goal, [](const JointGoal& g) { return g.line; });
+      warnings_.push_back(at(file.requestPath, line) + ": group '" + request.groupName +
+                          "' is defined by no SRDF: planning the " + std::to_string(plannedCoordinates) +
+                          " joints the goal constrains, the robot's other " + std::to_string(dof - plannedCoordinates) +
+                          " held at the start state");
+    }
+    dof = model_->dof();
+    goal_.assign(dof, 0.0);
   }
   // A mimic joint follows its leader, as in MoveIt, and a locked joint (equal limits) stands at its
   // limit: a start position given for either is not used, and one that disagrees is said to be
@@ -187,7 +231,10 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     }
     return nullptr;
   };
-  const auto standsBy = [](const ArmJoint& j) {
+  const auto standsBy = [&request](const ArmJoint& j) {
+    if (j.locked && j.lower != j.upper && j.mimics.empty()) {
+      return "the start state, outside planning group '" + request.groupName + "'";
+    }
     return j.locked ? std::string(j.mimics.empty() ? "its limits, which are equal"
                                                    : "joint '" + j.mimics + "', which is locked")
                     : "joint '" + j.mimics + "', which it mimics";
@@ -295,7 +342,16 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   for (const bool isStart : {true, false}) {
     const std::string& where = isStart ? startAt : goalAt;
     const char* which = isStart ? "the start state" : "the goal state";
-    checkLimits(*model_, isStart ? start_ : goal_, where, which);
+    // Named at the line of the joint outside its limits (it was the first joint's line).
+    const auto whereOf = [&](const std::string& joint) {
+      if (isStart) {
+        const auto line = request.startLines.find(joint);
+        return line != request.startLines.end() ? at(file.requestPath, line->second) : startAt;
+      }
+      const auto goal = request.goal.find(joint);
+      return goal != request.goal.end() ? at(file.requestPath, goal->second.line) : goalAt;
+    };
+    checkLimits(*model_, isStart ? start_ : goal_, whereOf, which);
     const ob::State* s = isStart ? startState.get() : goalState.get();
     if (!checker_->isValid(s)) {
       std::ostringstream why;

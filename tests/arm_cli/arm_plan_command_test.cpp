@@ -445,6 +445,20 @@ TEST(ArmPlanningProblem, JointWithoutAStartValueNamesTheRequest) {
     EXPECT_NE(std::string(e.what()).find("the start_state names 'gripper', which the robot lacks"), std::string::npos)
         << e.what();
   }
+  // A joint left out of the start state: the start state's first line, where it belongs (the
+  // message named no line).
+  const std::string shorter = replaced(replaced(shippedRequest(), ", 'wrist_roll']", "]"), "0.5, 0]", "0.5]");
+  ASSERT_NE(shorter, shippedRequest());
+  try {
+    ArmPlanningProblem(problemWith(dir, readAll(kArmProblems + "/kr5_table_pick/scene.yaml"), shorter),
+                       CheckingOptions{});
+    FAIL() << "no error";
+  } catch (const adsd::InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind((dir / "request.yaml").string() + ":", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find(": the start state has no position for joint 'wrist_roll'"), std::string::npos)
+        << e.what();
+    EXPECT_EQ(std::string(e.what()).find("request.yaml: the start"), std::string::npos) << "no line: " << e.what();
+  }
 }
 
 TEST(ArmPlanningProblem, ZeroToleranceGetsTheFloor) {
@@ -703,6 +717,82 @@ TEST(ArmPlanningProblem, LockedJointStandsAtItsLimits) {
   EXPECT_NE(r.out.find("solved      yes"), std::string::npos) << r.out;
 }
 
+// The request's group is planned, the robot's other joints held at the start state, as MoveIt
+// plans: every joint was planned, and a humanoid's request for one arm moved its legs, torso and
+// other arm (Atlas: 27 joints for the 2 its goal named). The group as the SRDF defines it (a
+// joint, a chain), else the joints the goal constrains, with a warning.
+TEST(ArmPlanningProblem, OnlyTheRequestsGroupIsPlannedTheOtherJointsHeld) {
+  const fs::path dir = workDirectory();
+  // 'yaw' turns the arm about z at the base, 'swing' about y at the shoulder.
+  std::ofstream(dir / "two.urdf")
+      << "<robot name='two'>\n"
+         "  <link name='base'><collision><geometry><box size='0.2 0.2 0.2'/></geometry></collision></link>\n"
+         "  <link name='a'/>\n"
+         "  <link name='arm'><collision><origin xyz='0.5 0 0'/><geometry><box size='1 0.1 0.1'/></geometry>"
+         "</collision></link>\n"
+         "  <joint name='yaw' type='revolute'><parent link='base'/><child link='a'/><origin xyz='0 0 1'/>"
+         "<axis xyz='0 0 1'/><limit lower='-2' upper='2' effort='1' velocity='1'/></joint>\n"
+         "  <joint name='swing' type='revolute'><parent link='a'/><child link='arm'/><axis xyz='0 1 0'/>"
+         "<limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
+         "</robot>\n";
+  writeRequest(dir, "yaw, swing", "0.3, 0", {{"swing", "0.8"}});
+  const std::string cfg = problemAmongNoObstacles(dir, "two.urdf");
+  const auto yawOf = [](const ArmPlanningProblem& p, double swing) {
+    std::vector<adsd::Pose> poses;
+    std::vector<double> q(p.model().dof(), swing);
+    forwardKinematics(p.model(), q.data(), poses);
+    const adsd::Vec3 x = poses[p.model().linkIndex("arm")].linear().col(0);
+    return std::atan2(x.y(), x.x());
+  };
+  {
+    // No SRDF: the goal's joints, said.
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    ASSERT_EQ(p.model().dof(), 1u);
+    EXPECT_EQ(p.model().jointIndex("swing"), 0u);
+    EXPECT_NEAR(yawOf(p, 0.4), 0.3, 1e-15);
+    ASSERT_EQ(p.warnings().size(), 1u);
+    EXPECT_EQ(p.warnings()[0], (dir / "request.yaml").string() +
+                                   ":8: group 'arm' is defined by no SRDF: planning the 1 joints the goal constrains, "
+                                   "the robot's other 1 held at the start state");
+  }
+  // The SRDF's group, a chain from the base to the arm: both joints, though the goal names one.
+  std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><chain base_link='base' tip_link='arm'/>"
+                                     "</group>\n<group name='shoulder'><joint name='swing'/></group>\n</robot>\n";
+  std::ofstream(dir / "problem.cfg", std::ios::app) << "srdf = two.srdf\n";
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    EXPECT_EQ(p.model().dof(), 2u);
+    EXPECT_TRUE(p.warnings().empty()) << p.warnings().front();
+  }
+  // A group of one joint, named by another group: the yaw held, no warning.
+  std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><group name='shoulder'/></group>\n"
+                                     "<group name='shoulder'><joint name='swing'/></group>\n</robot>\n";
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    ASSERT_EQ(p.model().dof(), 1u);
+    EXPECT_NEAR(yawOf(p, -0.2), 0.3, 1e-15);
+    EXPECT_TRUE(p.warnings().empty()) << p.warnings().front();
+  }
+  // A goal for a held joint elsewhere than it stands cannot be reached, named.
+  writeRequest(dir, "yaw, swing", "0.3, 0", {{"swing", "0.8"}, {"yaw", "1"}});
+  EXPECT_EQ(armProblemError(cfg), (dir / "request.yaml").string() +
+                                      ":9: goal joint 'yaw' stands at 0.3 by the start state, outside planning group "
+                                      "'arm': the goal's 1 cannot be reached");
+  // A group naming a joint the robot lacks: the SRDF's line.
+  std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><joint name='elbow'/></group>\n</robot>\n";
+  EXPECT_EQ(armProblemError(cfg), (dir / "two.srdf").string() + ":2: group names joint 'elbow', which " +
+                                      (dir / "two.urdf").string() + " lacks");
+  // Planned, the path file names the group's joint only.
+  std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><joint name='swing'/></group>\n</robot>\n";
+  writeRequest(dir, "yaw, swing", "0.3, 0", {{"swing", "0.8"}});
+  const PlanRun r = plan({cfg, "--seed", "1", "--path", (dir / "two.path").string()}, dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::ifstream path(dir / "two.path");
+  std::string header;
+  std::getline(path, header);
+  EXPECT_EQ(header, "# joints: swing");
+}
+
 // A goal just outside a joint's limit but within its tolerance of it is taken at the limit, as
 // MoveIt samples a joint goal within its tolerance and the limits; farther out it is refused.
 TEST(ArmPlanningProblem, AGoalOutsideALimitWithinItsToleranceIsTakenAtTheLimit) {
@@ -727,6 +817,11 @@ TEST(ArmPlanningProblem, AGoalOutsideALimitWithinItsToleranceIsTakenAtTheLimit) 
   request("1.002");
   EXPECT_NE(armProblemError(cfg).find("the goal state is outside the joint limits (joint swing = 1.002"),
             std::string::npos);
+  // Named at that joint's line, not the goal's first (an outside review: line 9 for the joint on 12).
+  writeRequest(dir, "held, swing", "0.5, 0", {{"held", "0.5"}, {"swing", "1.002"}});
+  EXPECT_EQ(armProblemError(cfg), (dir / "request.yaml").string() +
+                                      ":9: the goal state is outside the joint limits (joint swing = 1.002, limits "
+                                      "[-1, 1])");
 }
 
 // The slot problems are reached through the slot: start and goal valid (the constructor checks

@@ -115,4 +115,11 @@ struct ArmModel {
 /// at +-pi (a prismatic follower, or a turning one whose multiplier is not a whole number).
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath = {});
 
+/// \brief Holds every coordinate of \p model's joint vector whose joint is not named in \p planned
+/// at its value in \p q (a joint vector of \p model as it stands): the joint becomes locked there
+/// (ArmJoint::locked), as MoveIt holds the joints outside the planning group at the start state,
+/// and the joint vector is renumbered to the joints left, their order kept. A mimic joint whose
+/// leader is held is held at its leader's multiple. Call before sharing the model.
+void holdJointsOutside(ArmModel& model, const std::vector<std::string>& planned, const std::vector<double>& q);
+
 }  // namespace adsd::planner

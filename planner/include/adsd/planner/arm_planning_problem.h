@@ -37,6 +37,10 @@ bool isArmProblemFile(const std::string& path);
 /// joint with neither is an error naming the request file. Joints the request's start names but
 /// the model lacks get a warning (MoveIt files often carry extra joints, e.g. a gripper's).
 ///
+/// Joints planned: the request's `group_name` as the cfg's SRDF defines it (srdfGroupJoints), else
+/// the joints the goal constrains (with a warning); the robot's other joints are held at the start
+/// state (holdJointsOutside), as MoveIt plans a group, and model().dof() counts the planned ones.
+///
 /// Goal: the joint constraints' positions; a model joint without a constraint takes the start's
 /// value; a constraint on a joint the model lacks is an error naming the constraint's line. The
 /// goal is an OMPL GoalState with threshold the smallest tolerance of the constraints (floor
