@@ -139,8 +139,10 @@ std::vector<Field> Document::keysOutside(const Field& map, std::initializer_list
   requireMap(map);
   std::vector<Field> outside;
   for (auto it = map.node.begin(); it != map.node.end(); ++it) {
-    const YAML::Node& key = it->first;
-    Field f{it->second, map.path, static_cast<int>(key.Mark().line) + 1};
+    // Copies: the iterator's pair is a temporary, and a reference into it dangled (AddressSanitizer).
+    const YAML::Node key = it->first;
+    const YAML::Node value = it->second;
+    Field f{value, map.path, static_cast<int>(key.Mark().line) + 1};
     if (f.line < 1) f.line = map.line;
     if (!key.IsScalar()) fail(f, "a key that is not a name");
     const std::string name = key.Scalar();
