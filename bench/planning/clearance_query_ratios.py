@@ -67,6 +67,8 @@ def main():
         with open(cfg, "w") as f:
             f.write(clearance_cfg(os.path.join(a.problems, problem + ".cfg"), a.planner, a.time))
         logs, checkers = [], []
+        # adsd benchmark --out makes its own directory but not a missing parent.
+        os.makedirs(os.path.join(a.out, problem), exist_ok=True)
         for seed in range(1, a.seeds + 1):
             order = ["adsd", "fcl"] if seed % 2 else ["fcl", "adsd"]
             for checker in order:

@@ -274,6 +274,8 @@ def main():
             f.write(variant_cfg(os.path.join(args.problems, problem + ".cfg"), planners, 1, args.time))
         started = time.monotonic()
         logs, places_and_runs = [], []
+        # adsd benchmark --out makes its own directory but not a missing parent.
+        os.makedirs(os.path.join(args.out, problem), exist_ok=True)
         for r in range(args.runs):
             # Common random numbers: run r of both checkers starts from the same seed, so that a
             # single-threaded planner draws the same samples and builds the same tree with either
