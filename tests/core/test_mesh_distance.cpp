@@ -475,10 +475,10 @@ TEST(MeshDistance, AFineMeshFarFromACoarseOneIsBoundedByHulls) {
 }
 
 /// An open sheet curved like a turbine blade: a third of a cylinder of radius 3 and height 2, a
-/// grid of 48 x 12 quads. Seen from afar, its nodes' boxes all reach about as far as its best
-/// vertex, and the hull bound's support searches stop short of the support by a share of the room
-/// to the bound, adding what they left unopened to the margin (SupportPoint::reachBeyond). A
-/// margin that left it out would drop pairs that hold the answer.
+/// grid of around x up quads (48 x 12 unless asked). Seen from afar, its nodes' boxes all reach
+/// about as far as its best vertex, and the hull bound's support searches stop short of the
+/// support by a share of the room to the bound, adding what they left unopened to the margin
+/// (SupportPoint::reachBeyond). A margin that left it out would drop pairs that hold the answer.
 Mesh curvedSheet(int around = 48, int up = 12) {
   std::vector<Vec3> vertices;
   std::vector<TriangleIndices> triangles;
@@ -531,7 +531,7 @@ TEST(MeshDistance, ACurvedSheetSeenFromAfarKeepsItsAnswerUnderTheHullBound) {
 /// keep the parent's bound (traverseTrees' `test`), so that those whose hull bound fell just short
 /// are not ordered and bounded by their boxes alone again. Exact answers against the oracle; node
 /// pairs per query over 26 poses: 385 when children started from their boxes' bound, 315 with the
-/// parent's (the blade against the bull, bench: 294 and 204).
+/// parent's (the CGAL blade against the bull mid range, bench_bands --counters: 260 and 176).
 TEST(MeshDistance, ChildrenOfAHullBoundedPairKeepItsBound) {
   Mesh sheet = curvedSheet(96, 24);
   Mesh ball = shapes::sphere(0.4, 40);
@@ -544,7 +544,7 @@ TEST(MeshDistance, ChildrenOfAHullBoundedPairKeepItsBound) {
   const int checked = std::min(kPoses, kPosesPerPair / 10);
   std::uint64_t nodePairs = 0;
   for (int i = 0; i < kPoses; ++i) {
-    // Outside the cylinder the sheet bends away from the ball, as the blade's from the bull.
+    // Outside the cylinder, where the sheet bends away from the ball.
     const double angle = random.uniform(0.3, 1.8), height = random.uniform(0.2, 1.8);
     const double radius = 3.0 + 0.4 + random.uniform(0.2, 2.0);
     const Pose poseBall(Eigen::Translation3d(radius * std::cos(angle), radius * std::sin(angle), height) *
