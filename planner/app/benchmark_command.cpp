@@ -50,6 +50,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -661,6 +662,27 @@ BenchmarkInput armInput(const BenchmarkArguments& a, const std::string& path) {
   return in;
 }
 
+/// Adds every `problem.cfg` under \p directory to \p found. Linked folders are followed (a
+/// problem set assembled from links to a dataset's folders), each real folder once, the first
+/// met in name order: a link back up (a loop) or a second link to one folder is not entered again.
+void collectProblemFiles(const fs::path& directory, std::set<fs::path>& entered, std::vector<std::string>& found) {
+  std::error_code ec;
+  std::vector<fs::directory_entry> entries;
+  for (fs::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) entries.push_back(*it);
+  if (ec) throw InputError(directory.string() + ": cannot list the directory: " + ec.message());
+  std::sort(entries.begin(), entries.end(),
+            [](const fs::directory_entry& x, const fs::directory_entry& y) { return x.path() < y.path(); });
+  for (const fs::directory_entry& e : entries) {
+    std::error_code entry;
+    if (e.is_directory(entry)) {
+      const fs::path real = fs::canonical(e.path(), entry);
+      if (!entry && entered.insert(real).second) collectProblemFiles(e.path(), entered, found);
+    } else if (e.path().filename() == "problem.cfg" && e.is_regular_file(entry)) {
+      found.push_back(e.path().string());
+    }
+  }
+}
+
 /// The problems \p a names: a problem file (either kind), or every `problem.cfg` under a
 /// directory, in path order (each an arm problem).
 std::vector<BenchmarkInput> inputsOf(const BenchmarkArguments& a) {
@@ -669,10 +691,9 @@ std::vector<BenchmarkInput> inputsOf(const BenchmarkArguments& a) {
     return {isArmProblemFile(a.problem) ? armInput(a, a.problem) : rigidInput(a, a.problem)};
   }
   std::vector<std::string> found;
-  for (fs::recursive_directory_iterator it(a.problem, ec), end; !ec && it != end; it.increment(ec)) {
-    if (it->path().filename() == "problem.cfg" && it->is_regular_file()) found.push_back(it->path().string());
-  }
+  std::set<fs::path> entered{fs::canonical(a.problem, ec)};
   if (ec) throw InputError(a.problem + ": cannot list the directory: " + ec.message());
+  collectProblemFiles(a.problem, entered, found);
   std::sort(found.begin(), found.end());
   if (found.empty()) throw InputError(a.problem + ": no problem.cfg under this directory");
   std::vector<BenchmarkInput> inputs;

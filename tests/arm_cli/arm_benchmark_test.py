@@ -90,12 +90,25 @@ def main():
             f.write("[problem]\nname = %s\nrobot = ${ADSD_ROBOTS}/wam/wam.urdf\nsrdf = %s/../wam.srdf\n"
                     "scene = %s/scene.yaml\nrequest = %s/request.yaml\npackage_path = ${ADSD_ROBOTS}\n"
                     % (name, shipped, shipped, shipped))
+    # A folder linked in from elsewhere is a problem too; a link back up (a loop) and a second link
+    # to a listed folder are not entered again (the loop hung the listing, or ran one problem twice).
+    linked = os.path.join(args.work, "elsewhere", "c_linked")
+    os.makedirs(linked)
+    with open(os.path.join(linked, "problem.cfg"), "w") as f:
+        f.write("[problem]\nname = c_linked\nrobot = ${ADSD_ROBOTS}/wam/wam.urdf\nsrdf = %s/../wam.srdf\n"
+                "scene = %s/scene.yaml\nrequest = %s/request.yaml\npackage_path = ${ADSD_ROBOTS}\n"
+                % (shipped, shipped, shipped))
+    os.symlink(linked, os.path.join(folders, "c_linked"))
+    os.symlink(folders, os.path.join(folders, "a_first", "loop"))
+    os.symlink(os.path.join(folders, "b_second"), os.path.join(folders, "d_again"))
     out = os.path.join(args.work, "many")
     p = run(args.adsd, [folders, "--runs", "1", "--time", "0.5", "--checker", "adsd", "--motion", "discrete",
                         "--out", out, "--log-only"])
     if check(p.returncode == 0, "a directory: exit %d\n%s%s" % (p.returncode, p.stdout, p.stderr)):
-        for name in ("a_first", "b_second"):
+        for name in ("a_first", "b_second", "c_linked"):
             check(os.path.isfile(os.path.join(out, name + ".log")), "no log for " + name)
+        check(sorted(os.listdir(out)) == ["a_first.log", "b_second.log", "c_linked.log"],
+              "a directory with links: wrote %s" % sorted(os.listdir(out)))
 
     # Two problems of one name would write the same files: refused before any run, naming both.
     same = os.path.join(args.work, "same")
