@@ -60,6 +60,17 @@ TEST(PoseFile, CommentsBlankLinesAndCrLfAreSkippedAndLinesCounted) {
   EXPECT_EQ(poses[1].b.translation(), Vec3(4, 5, 6));
 }
 
+TEST(PoseFile, LoneCarriageReturnsEndLines) {
+  // Classic Mac OS text: before, its lines ran together into one line of 28 numbers.
+  const std::string text = std::string("# header\r") + kIdentityPair + "\r\r" + kIdentityPair + "\r";
+  const std::vector<PosePair> poses = read(text);
+  ASSERT_EQ(poses.size(), 2u);
+  EXPECT_EQ(poses[0].line, 2);
+  EXPECT_EQ(poses[1].line, 4);
+  const std::string bad = readError(std::string(kIdentityPair) + "\r0 0 0 1 0 0 0\r", 2);
+  EXPECT_NE(bad.find("got 7"), std::string::npos) << bad;
+}
+
 TEST(PoseFile, Utf8ByteOrderMarkBeforeTheFirstLineIsSkipped) {
   const std::vector<PosePair> poses = read("\xEF\xBB\xBF" + std::string(kIdentityPair) + "\n");
   ASSERT_EQ(poses.size(), 1u);
@@ -111,6 +122,15 @@ TEST(PoseFileBadInput, NotANumber) {
   EXPECT_NE(comma.find("field 1 (tx of mesh A) is not a number: '0,'"), std::string::npos) << comma;
   const std::string binary = readError(std::string("0 0 0 1 0 0 0  0 0 0 1 0 0 ") + "\x01\x02\n", 1);
   EXPECT_NE(binary.find("'?" "?'"), std::string::npos) << binary;  // two control bytes
+}
+
+TEST(PoseFileBadInput, LineWithoutEndIsRefusedAtItsLengthLimit) {
+  // A stream without line ends (/dev/zero on stdin) was read into one string until memory ran out.
+  const std::string endless(std::size_t{3} << 20, '0');
+  const std::string message = readError(std::string(kIdentityPair) + "\n" + endless, 2);
+  EXPECT_NE(message.find("line longer than 1048576 bytes"), std::string::npos) << message;
+  // A long comment under the limit is still a comment.
+  EXPECT_EQ(read(std::string(kIdentityPair) + " #" + std::string(100000, 'x') + "\n").size(), 1u);
 }
 
 TEST(PoseFileBadInput, BadLastLineMeansNothingIsReturned) {

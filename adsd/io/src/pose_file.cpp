@@ -1,7 +1,9 @@
 #include "adsd/io/pose_file.h"
 
 #include <array>
+#include <climits>
 #include <cmath>
+#include <ios>
 #include <sstream>
 #include <string_view>
 
@@ -13,6 +15,10 @@ namespace adsd::io {
 namespace {
 
 constexpr int kNumbersPerLine = 14;
+/// The longest line read: 14 numbers of 17 digits and a comment fit thousands of times over. A
+/// stream without line ends (a binary file, /dev/zero piped to stdin) is refused at this length
+/// instead of filling the memory.
+constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 constexpr int kNumbersPerPose = 7;
 constexpr std::array<const char*, kNumbersPerPose> kPoseFieldNames = {"tx", "ty", "tz", "qw", "qx", "qy", "qz"};
 
@@ -41,13 +47,46 @@ Pose poseFrom(const double* numbers, const std::string& where, const char* meshL
   return pose;
 }
 
+/// Reads line \p lineNumber of \p in into \p line without its end: '\n', "\r\n", or a lone '\r'
+/// (classic Mac OS text, whose lines would otherwise run together into one). False at the end of
+/// the input with nothing read.
+bool nextLine(std::istream& in, std::string& line, const std::string& sourceName, long long lineNumber) {
+  using Traits = std::istream::traits_type;
+  line.clear();
+  std::streambuf* const buffer = in.rdbuf();
+  if (buffer == nullptr || !in.good()) return false;
+  try {
+    for (bool any = false;; any = true) {
+      const Traits::int_type c = buffer->sbumpc();
+      if (Traits::eq_int_type(c, Traits::eof())) {
+        in.setstate(std::ios::eofbit);
+        return any;
+      }
+      if (c == '\n') return true;
+      if (c == '\r') {
+        if (Traits::eq_int_type(buffer->sgetc(), Traits::to_int_type('\n'))) buffer->sbumpc();
+        return true;
+      }
+      if (line.size() == kMaxLineBytes) {
+        throw InputError(sourceName + ":" + std::to_string(lineNumber) + ": line longer than " +
+                         std::to_string(kMaxLineBytes) + " bytes (not a pose file?)");
+      }
+      line.push_back(Traits::to_char_type(c));
+    }
+  } catch (const std::ios_base::failure&) {  // a file stream's read error
+    in.setstate(std::ios::badbit);
+    return false;
+  }
+}
+
 }  // namespace
 
 std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceName) {
   std::vector<PosePair> poses;
   std::string line;
   int lineNumber = 0;
-  while (std::getline(in, line)) {
+  while (nextLine(in, line, sourceName, lineNumber + 1LL)) {
+    if (lineNumber == INT_MAX) throw InputError(sourceName + ": more than " + std::to_string(INT_MAX) + " lines");
     ++lineNumber;
     std::string_view content(line);
     if (lineNumber == 1 && content.substr(0, detail::kUtf8ByteOrderMark.size()) == detail::kUtf8ByteOrderMark) {

@@ -3,7 +3,8 @@
 /// \brief The pose-file format of `adsd distance --poses`: one query per line.
 ///
 /// A line holds 14 numbers, `tx ty tz qw qx qy qz` for mesh A, then the same for mesh B; each
-/// pose maps mesh coordinates to the world. `#` starts a comment; blank lines are skipped.
+/// pose maps mesh coordinates to the world. `#` starts a comment; blank lines are skipped. Lines
+/// end in '\n', "\r\n" or a lone '\r', and are at most 1 MiB long.
 
 #include <istream>
 #include <string>
@@ -24,7 +25,8 @@ inline constexpr double kQuaternionNormTolerance = 1e-6;
 
 /// \brief Reads all pose pairs; throws adsd::InputError "NAME:LINE: what is wrong" for a line
 /// without exactly 14 finite numbers or with a quaternion whose norm is off by more than
-/// kQuaternionNormTolerance. Nothing is returned unless every line is good.
+/// kQuaternionNormTolerance, or a line longer than 1 MiB (a stream without line ends is refused
+/// there, not read into memory whole). Nothing is returned unless every line is good.
 std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceName);
 
 }  // namespace adsd::io
