@@ -43,7 +43,7 @@ constexpr const char* kDetails =
     "Without --poses both meshes are at identity and a readable summary is printed. With --poses,\n"
     "each line of FILE (- for stdin) is one query: 14 numbers, tx ty tz qw qx qy qz for mesh A and\n"
     "then for mesh B (each pose maps mesh coordinates to the world; quaternions of unit norm);\n"
-    "'#' starts a comment. Witness points are in the world frame.\n"
+    "'#' starts a comment; at most 1000000 poses per file. Witness points are in the world frame.\n"
     "\n"
     "Query mode: exact by default; --abs-tol/--rel-tol (together or alone) return an interval\n"
     "[lower, upper] within the tolerance; --threshold D only decides whether the distance exceeds\n"
@@ -143,10 +143,15 @@ std::optional<DistanceArguments> parseArguments(const std::vector<std::string>& 
   return a;
 }
 
+/// Poses a file may hold: a query's pose, result and output line take about 700 bytes, all kept
+/// until the last query is answered (nothing is printed before every line is read and good), so
+/// an endless stream of poses on stdin took all the memory.
+constexpr std::size_t kMaxPoses = 1000000;
+
 std::vector<io::PosePair> readPoses(const std::string& source) {
   std::vector<io::PosePair> poses;
   if (source == "-") {
-    poses = io::readPoseFile(std::cin, "stdin");
+    poses = io::readPoseFile(std::cin, "stdin", kMaxPoses);
   } else {
     std::error_code ec;
     if (!std::filesystem::exists(source, ec)) throw InputError(source + ": no such file");
@@ -158,7 +163,7 @@ std::vector<io::PosePair> readPoses(const std::string& source) {
     }
     std::ifstream in(source);
     if (!in) throw InputError(source + ": cannot be opened for reading");
-    poses = io::readPoseFile(in, source);
+    poses = io::readPoseFile(in, source, kMaxPoses);
   }
   if (poses.empty()) {
     throw InputError((source == "-" ? std::string("stdin") : source) +

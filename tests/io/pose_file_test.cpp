@@ -133,6 +133,21 @@ TEST(PoseFileBadInput, LineWithoutEndIsRefusedAtItsLengthLimit) {
   EXPECT_EQ(read(std::string(kIdentityPair) + " #" + std::string(100000, 'x') + "\n").size(), 1u);
 }
 
+TEST(PoseFileBadInput, PosesBeyondTheLimitAreRefusedAtTheFirstOneOver) {
+  // An endless stream of good poses (`yes POSE | adsd distance --poses -`) took all the memory.
+  std::string text;
+  for (int i = 0; i < 5; ++i) text += std::string(kIdentityPair) + "\n# comment\n";
+  std::istringstream in(text);
+  try {
+    readPoseFile(in, "poses.txt", 4);
+    ADD_FAILURE() << "five poses read under a limit of four";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "poses.txt:9: more than 4 poses: split the file");
+  }
+  std::istringstream exactly(text);
+  EXPECT_EQ(readPoseFile(exactly, "poses.txt", 5).size(), 5u);
+}
+
 TEST(PoseFileBadInput, BadLastLineMeansNothingIsReturned) {
   std::string text;
   for (int i = 0; i < 50; ++i) text += std::string(kIdentityPair) + "\n";

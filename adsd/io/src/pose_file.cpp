@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <ios>
+#include <new>
 #include <sstream>
 #include <string_view>
 
@@ -81,7 +82,7 @@ bool nextLine(std::istream& in, std::string& line, const std::string& sourceName
 
 }  // namespace
 
-std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceName) {
+std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceName, std::size_t maxPoses) {
   std::vector<PosePair> poses;
   std::string line;
   int lineNumber = 0;
@@ -116,7 +117,14 @@ std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceNa
     pair.a = poseFrom(numbers, where, "A");
     pair.b = poseFrom(numbers + kNumbersPerPose, where, "B");
     pair.line = lineNumber;
-    poses.push_back(pair);
+    if (poses.size() == maxPoses) {
+      throw InputError(where + "more than " + std::to_string(maxPoses) + " poses: split the file");
+    }
+    try {
+      poses.push_back(pair);
+    } catch (const std::bad_alloc&) {
+      throw InputError(where + "out of memory after " + std::to_string(poses.size()) + " poses: split the file");
+    }
   }
   if (in.bad()) throw InputError(sourceName + ":" + std::to_string(lineNumber + 1) + ": read error");
   return poses;

@@ -6,7 +6,9 @@
 /// pose maps mesh coordinates to the world. `#` starts a comment; blank lines are skipped. Lines
 /// end in '\n', "\r\n" or a lone '\r', and are at most 1 MiB long.
 
+#include <cstddef>
 #include <istream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,10 @@ inline constexpr double kQuaternionNormTolerance = 1e-6;
 /// without exactly 14 finite numbers or with a quaternion whose norm is off by more than
 /// kQuaternionNormTolerance, or a line longer than 1 MiB (a stream without line ends is refused
 /// there, not read into memory whole). Nothing is returned unless every line is good.
-std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceName);
+/// A file of more than \p maxPoses poses is refused at the line of the first pose beyond them (an
+/// endless stream of poses on stdin otherwise takes all the memory), and so is one that exhausts
+/// the memory before that.
+std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceName,
+                                   std::size_t maxPoses = std::numeric_limits<std::size_t>::max());
 
 }  // namespace adsd::io
