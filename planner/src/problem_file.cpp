@@ -58,6 +58,11 @@ constexpr double kMaxCoordinateMagnitude = tolerance::kMaxCoordinate;
 /// OMPL's StateSpace::setLongestValidSegmentFraction throws unless the fraction f satisfies
 /// eps <= f <= 1 - eps with eps the machine epsilon of double (dimensionless).
 constexpr double kOmplSegmentFractionMargin = std::numeric_limits<double>::epsilon();
+/// OMPL's default longest_valid_segment_fraction.
+constexpr double kOmplDefaultSegmentFraction = 0.01;
+/// The most states a discrete check of a motion across the whole space may take: 1e5, about a
+/// tenth of a second of checks (OMPL's defaults take 100).
+constexpr double kMaxStatesPerMotion = 1e5;
 
 /// At most this many characters of a value are echoed in a message (a line may be 8 KB).
 constexpr std::size_t kMaxEchoedCharacters = 60;
@@ -451,6 +456,29 @@ void readProblemSection(const std::vector<Entry>& entries, int sectionLine, cons
                          "' (expected x, y, theta, and for SE(3) z, axis.x, axis.y, axis.z)");
       }
     }
+  }
+
+  // OMPL checks a motion in valid_segment_count_factor states per longest valid segment, and the
+  // longest motion spans 1 / longest_valid_segment_fraction segments. No single check stops at
+  // the planner's time limit, so a tiny fraction (1e-8) or a huge factor made one motion check
+  // run for minutes whatever --time said.
+  double fraction = kOmplDefaultSegmentFraction, factor = 1.0;
+  const Entry* fractionEntry = nullptr;
+  const Entry* factorEntry = nullptr;
+  for (const Entry& e : entries) {
+    if (e.key == "problem.longest_valid_segment_fraction") fraction = parseNumber(*(fractionEntry = &e), source);
+    if (e.key == "problem.valid_segment_count_factor") factor = parseNumber(*(factorEntry = &e), source);
+  }
+  if (factor / fraction > kMaxStatesPerMotion) {
+    const auto formatNumber = [](double x) {
+      std::ostringstream out;
+      out << x;
+      return out.str();
+    };
+    const Entry& culprit = fractionEntry != nullptr ? *fractionEntry : *factorEntry;
+    throw InputError(locate(source, culprit).describe() + ": valid_segment_count_factor / " +
+                     "longest_valid_segment_fraction is " + formatNumber(factor / fraction) + ": a motion across the " +
+                     "space would be checked in that many states (at most " + formatNumber(kMaxStatesPerMotion) + ")");
   }
 
   // SE(3) when any start or goal key beyond x, y, theta is present; then all must be.

@@ -313,6 +313,26 @@ TEST(ProblemFileErrors, SpaceParametersOmplWouldRefuseNameTheKey) {
             ":18: key 'problem.valid_segment_count_factor': expected a whole number from 1 to 4294967295, got '0'");
 }
 
+// Adversarial review: OMPL accepts a fraction down to 2.2e-16, but a discrete motion check ignores
+// the planner's time limit, and `adsd plan --time 1` with a fraction of 1e-8 ran for minutes.
+TEST(ProblemFileErrors, MotionsCheckedInTooManyStatesNameTheKey) {
+  const std::string tooMany = ": a motion across the space would be checked in that many states (at most 100000)";
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "longest_valid_segment_fraction = 1e-8\n"),
+            ":18: key 'problem.longest_valid_segment_fraction': valid_segment_count_factor / "
+            "longest_valid_segment_fraction is 1e+08" + tooMany);
+  // With OMPL's default fraction (0.01), a factor of 10 000 000 checks 1e9 states.
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "valid_segment_count_factor = 10000000\n"),
+            ":18: key 'problem.valid_segment_count_factor': valid_segment_count_factor / "
+            "longest_valid_segment_fraction is 1e+09" + tooMany);
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "longest_valid_segment_fraction = 0.001\nvalid_segment_count_factor = 1000\n"),
+            ":18: key 'problem.longest_valid_segment_fraction': valid_segment_count_factor / "
+            "longest_valid_segment_fraction is 1e+06" + tooMany);
+  ScratchDir dir;
+  EXPECT_NO_THROW(readProblemFile(dir.write("a.cfg", std::string(kSe3Start) + "longest_valid_segment_fraction = 2e-5\n")));
+  EXPECT_NO_THROW(readProblemFile(
+      dir.write("b.cfg", std::string(kSe3Start) + "longest_valid_segment_fraction = 0.001\nvalid_segment_count_factor = 50\n")));
+}
+
 TEST(ProblemFileErrors, PlannerParametersOmplWouldMisreadNameTheKey) {
   const std::string planners = std::string(kSe3Start) + "[planner]\nprm =\nrrtstar =\nkpiece =\n";
   // PRM: -1 wraps to 2^32 - 1 neighbours (std::bad_alloc); 1e3 would be read as 1.
