@@ -90,6 +90,17 @@ TEST(ChildProcessReader, EndlessReaderIsStoppedAtTheLimit) {
                   "make some of its readers loop)");
 }
 
+// Adversarial review: a 13-byte SMD file ("nodes", then one bone) makes assimp loop, and the
+// default limit let it run 30 s before the file was refused: a small file must be given up on
+// well before a user takes the program for hung (20 s).
+TEST(ChildProcessReader, DefaultLimitForASmallFileEndsWellBeforeAUserThinksItHung) {
+  EXPECT_LT(effectiveLimits(ReaderLimits{}, 13).seconds, 10.5);
+  EXPECT_LE(effectiveLimits(ReaderLimits{}, 1000000).seconds, 11.0);
+  // Large files keep a second per MB on top (the 1.1 MB Atlas torso COLLADA file reads in 50 ms).
+  EXPECT_GE(effectiveLimits(ReaderLimits{}, 100000000).seconds, 100.0);
+  EXPECT_EQ(effectiveLimits(limitsOf(0.5), 100000000).seconds, 0.5);  // a caller's limit is kept
+}
+
 TEST(ChildProcessReader, RunawayAllocationIsOutOfMemory) {
   if (adsd::test::kUnderSanitizer) GTEST_SKIP() << "the memory limit is not applied under a sanitizer";
   const std::string big = failureOf([]() -> ReadTriangles {

@@ -246,7 +246,7 @@ std::string signalName(int signal) {
 
 ReaderLimits effectiveLimits(const ReaderLimits& limits, std::uint64_t fileBytes) {
   ReaderLimits out = limits;
-  if (!(out.seconds > 0.0) || !std::isfinite(out.seconds)) out.seconds = 30.0 + static_cast<double>(fileBytes) / 1e6;
+  if (!(out.seconds > 0.0) || !std::isfinite(out.seconds)) out.seconds = 10.0 + static_cast<double>(fileBytes) / 1e6;
   if (out.memoryBytes == 0) {
     const std::uint64_t perByte = fileBytes > (~std::uint64_t{0} >> 6) ? ~std::uint64_t{0} : fileBytes << 6;
     out.memoryBytes = std::max(std::uint64_t{4} << 30, perByte);
