@@ -459,6 +459,38 @@ urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdfPath, cons
   return urdf;
 }
 
+/// How far a prismatic joint can move its child along its axis (0 for the other kinds).
+double prismaticTravel(const ArmModel& model, const ArmJoint& joint) {
+  if (joint.type != ArmJointType::prismatic) return 0.0;
+  if (joint.locked) return std::fabs(joint.lockedPosition);
+  if (joint.mimicCoordinate >= 0) {
+    const ArmJoint& leader = model.joints[model.activeJoints[static_cast<std::size_t>(joint.mimicCoordinate)]];
+    return std::fabs(joint.mimicMultiplier) * std::max(std::fabs(leader.lower), std::fabs(leader.upper)) +
+           std::fabs(joint.mimicOffset);
+  }
+  return std::max(std::fabs(joint.lower), std::fabs(joint.upper));
+}
+
+/// Each joint's offset and travel is within 1e75 (convertJoint), but down a chain they add up,
+/// and a link placed beyond 1e75 was refused only by the distance query, naming neither the file
+/// nor the joint, after `adsd plan` had printed its summary. Bounds each link's distance from the
+/// root by the sum of the offsets and travels above it.
+void checkReach(const ArmModel& model, const std::string& urdfPath, const UrdfOutline& outline) {
+  std::vector<double> reach(model.links.size(), 0.0);
+  for (std::size_t i = 1; i < model.links.size(); ++i) {
+    const ArmJoint& joint = model.joints[static_cast<std::size_t>(model.links[i].parentJoint)];
+    reach[i] = reach[joint.parentLink] + joint.origin.translation().norm() + prismaticTravel(model, joint);
+    if (reach[i] > tolerance::kMaxCoordinate) {
+      std::ostringstream far;
+      far << reach[i];
+      throw InputError(urdfPath + ":" + std::to_string(outline.jointLine.at(joint.name)) + ": joint '" + joint.name +
+                       "': its link '" + model.links[i].name +
+                       "' may lie " + far.str() + " from the root link (the joints' offsets and prismatic travel " +
+                       "down the chain added up), beyond 1e75");
+    }
+  }
+}
+
 }  // namespace
 
 ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& packageSearchPath) {
@@ -509,6 +541,7 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
     }
   }
   resolveMimicJoints(*urdf, urdfPath, outline, model);
+  checkReach(model, urdfPath, outline);
   return model;
 }
 

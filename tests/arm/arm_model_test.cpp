@@ -522,6 +522,41 @@ TEST(ArmModel, JointOriginAndLimitsOutOfRangeAreRefusedNamingTheJoint) {
   EXPECT_EQ(readUrdf(dir.write("fine.urdf", robot(R"(<origin xyz="1e6 0 0"/>)", limit))).joints[0].upper, 1.0);
 }
 
+// Adversarial review: offsets of 1e75 each, down a chain of three joints, placed the tip at 3e75.
+// The distance query refused it naming neither the file nor the joint, after `adsd plan` had
+// printed "solved yes". The sum is bounded when the URDF is read; so is a prismatic joint's travel.
+TEST(ArmModel, OffsetsAddingUpBeyond1e75DownAChainAreRefusedNamingTheJoint) {
+  test::ScratchDir dir;
+  const auto chain = [](const std::string& x, const std::string& upper) {
+    std::string text = "<robot name=\"r\">\n<link name=\"l0\"/>\n<link name=\"l1\"/>\n<link name=\"l2\"/>\n"
+                       "<link name=\"l3\"/>\n";
+    for (int k = 1; k <= 3; ++k) {
+      text += "<joint name=\"j" + std::to_string(k) + "\" type=\"prismatic\">\n<parent link=\"l" +
+              std::to_string(k - 1) + "\"/><child link=\"l" + std::to_string(k) + "\"/>\n<origin xyz=\"" + x +
+              " 0 0\"/><axis xyz=\"1 0 0\"/>\n<limit lower=\"0\" upper=\"" + upper +
+              "\" effort=\"1\" velocity=\"1\"/>\n</joint>\n";
+    }
+    return text + "</robot>\n";
+  };
+  const std::string far = dir.write("far.urdf", chain("1e75", "0"));
+  try {
+    readUrdf(far);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), far + ":11: joint 'j2': its link 'l2' may lie 2e+75 from the root link (the "
+                                           "joints' offsets and prismatic travel down the chain added up), beyond 1e75");
+  }
+  const std::string sliding = dir.write("sliding.urdf", chain("1", "4e74"));
+  try {
+    readUrdf(sliding);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(sliding + ":16: joint 'j3': its link 'l3' may lie 1.2e+75"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(readUrdf(dir.write("near.urdf", chain("3e74", "0"))).links.size(), 4u);
+}
+
 // An axis's norm overflowed (0 0 1e300: a zero axis, then "pose is not rigid" from the distance
 // query, naming no file) or underflowed (0 -1e-170 0: refused as a zero vector); both name a
 // direction.
