@@ -15,6 +15,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <ompl/base/ScopedState.h>
@@ -91,6 +92,11 @@ std::optional<ViewArguments> parseArguments(const std::vector<std::string>& args
   return a;
 }
 
+/// The longest line of a path file read: an arm's joint values and a comment fit many times over.
+/// A line of millions of numbers was kept whole before its count was checked (a 200 MB line took
+/// 2.3 GB).
+constexpr std::size_t kMaxPathLineBytes = std::size_t{1} << 20;
+
 /// Calls \p onComment for each comment line of a path file (its text after '#') and \p onState
 /// for each state line (its numbers), each with "FILE:LINE: " to put before an error; blank lines
 /// are skipped. Throws when the file cannot be read, a word is not a finite number, or there is no
@@ -104,17 +110,20 @@ void readPathLines(const std::string& file,
   std::ifstream in(file);
   if (!in) throw InputError(file + ": cannot be opened for reading");
   std::size_t states = 0;
-  std::string line;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
+  const auto readLine = [&](std::string_view text, std::size_t number) {
     const std::string where = file + ":" + std::to_string(number) + ": ";
+    if (text.size() > kMaxPathLineBytes) {
+      throw InputError(where + "line longer than " + std::to_string(kMaxPathLineBytes) + " bytes (not a path file?)");
+    }
+    std::string line(text);
     // A UTF-8 byte-order mark, which Windows editors write, is no part of the first line: left in,
     // it was quoted invisibly as part of a number ("'-6' is not a finite number").
     if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
-    const std::size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos) continue;
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos) return;
     if (line[first] == '#') {
       onComment(line.substr(first + 1), where);
-      continue;
+      return;
     }
     // A comment may follow a state's numbers on its line.
     std::istringstream words(line.substr(0, line.find('#')));
@@ -128,6 +137,17 @@ void readPathLines(const std::string& file,
     }
     onState(values, where);
     ++states;
+  };
+  // Lines end in '\n', "\r\n" or a lone '\r' (classic Mac OS text, which getline returns whole).
+  std::string raw;
+  for (std::size_t number = 0; std::getline(in, raw);) {
+    std::string_view rest(raw);
+    if (!rest.empty() && rest.back() == '\r') rest.remove_suffix(1);
+    for (std::size_t cr = rest.find('\r');; cr = rest.find('\r')) {
+      readLine(rest.substr(0, cr), ++number);
+      if (cr == std::string_view::npos) break;
+      rest.remove_prefix(cr + 1);
+    }
   }
   if (states == 0) throw InputError(file + ": no states (only comments or blank lines)");
 }

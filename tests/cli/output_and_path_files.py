@@ -121,6 +121,22 @@ def main():
         check(m.returncode == 0 and [line for line in m.stdout.splitlines() if line.startswith("clearance")] ==
               [line for line in r.stdout.splitlines() if line.startswith("clearance")],
               f"view of a path file with a byte-order mark: exit {m.returncode} ({m.stderr.strip()})")
+        # Lone carriage returns end lines (classic Mac OS text; read as one line of 9 numbers before),
+        # and so do CRLF pairs: the same states, so the same clearance printed.
+        for name, end in (("mac", b"\r"), ("dos", b"\r\n")):
+            ended = os.path.join(work, name + ".path")
+            pathlib.Path(ended).write_bytes(pathlib.Path(turned).read_bytes().replace(b"\n", end))
+            e = run(adsd, ["view", office, "--path", ended, "--html", os.path.join(work, name + ".html")], work)
+            check(e.returncode == 0 and [line for line in e.stdout.splitlines() if line.startswith("clearance")] ==
+                  [line for line in r.stdout.splitlines() if line.startswith("clearance")],
+                  f"view of a path file with {end!r} line ends: exit {e.returncode} ({e.stderr.strip()})")
+        # A line of millions of numbers is refused by its length, naming it, before its numbers are
+        # kept (a 200 MB line took 2.3 GB).
+        endless = os.path.join(work, "endless.path")
+        pathlib.Path(endless).write_text("-6 2.5 0\n" + "1 " * 600000 + "\n")
+        expect_refused(adsd, ["view", office, "--path", endless, "--html", os.path.join(work, "endless.html")], work,
+                       f"adsd view: error: {endless}:2: line longer than 1048576 bytes (not a path file?)")
+        check(not os.path.exists(os.path.join(work, "endless.html")), "view of an endless line wrote a page")
         # The same turns written within [-pi, pi]: the same states, so the same clearance printed.
         wrapped = os.path.join(work, "wrapped.path")
         pathlib.Path(wrapped).write_text(f"-6 2.5 0\n0 0 {4 - 2 * math.pi!r}\n6 -2.5 {math.pi / 2!r}\n")
