@@ -119,6 +119,12 @@ void scanLines(const std::string& text, const std::string& source, std::vector<E
         throw InputError(source + ":" + std::to_string(line) + ": malformed section header " + quoted(s));
       }
       const std::string name = trim(s.substr(1, s.size() - 2));
+      // Boost (and so OMPL.app) keeps spaces inside the brackets: "[ problem ]" is a section named
+      // " problem ", whose keys were then reported missing from [problem].
+      if (name != s.substr(1, s.size() - 2)) {
+        throw InputError(source + ":" + std::to_string(line) + ": section header " + quoted(s) +
+                         " has spaces inside its brackets, which make another section (write '[" + name + "]')");
+      }
       sections.push_back({name, line});
       prefix = name + ".";
       continue;

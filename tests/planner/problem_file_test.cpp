@@ -313,6 +313,15 @@ TEST(ProblemFileErrors, SpaceParametersOmplWouldRefuseNameTheKey) {
             ":18: key 'problem.valid_segment_count_factor': expected a whole number from 1 to 4294967295, got '0'");
 }
 
+// Adversarial review: Boost keeps the spaces of "[ problem ]", so its keys were reported missing
+// ("key 'problem.start.x' is missing") while the file plainly has them.
+TEST(ProblemFileErrors, SectionHeaderWithSpacesInsideItsBracketsIsNamed) {
+  std::string text = kSe3Start;
+  text.replace(0, std::string("[problem]").size(), "[ problem ]");
+  EXPECT_EQ(errorOf(text), ":1: section header '[ problem ]' has spaces inside its brackets, which make another "
+                           "section (write '[problem]')");
+}
+
 // Adversarial review: OMPL accepts a fraction down to 2.2e-16, but a discrete motion check ignores
 // the planner's time limit, and `adsd plan --time 1` with a fraction of 1e-8 ran for minutes.
 TEST(ProblemFileErrors, MotionsCheckedInTooManyStatesNameTheKey) {
