@@ -43,6 +43,10 @@ class ObjReader {
     while (lines_.next(line)) {
       const std::size_t hash = line.find('#');
       if (hash != std::string_view::npos) line = line.substr(0, hash);
+      if (line.size() > kMaxWordLineBytes) {
+        throw InputError(at() + "line longer than " + std::to_string(kMaxWordLineBytes) +
+                         " bytes (a face of millions of corners?)");
+      }
       const std::vector<std::string_view> tokens = splitWhitespace(line);
       if (tokens.empty()) continue;
       const std::string_view keyword = tokens[0];

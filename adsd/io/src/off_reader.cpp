@@ -199,6 +199,10 @@ class OffReader {
         throw InputError(path_ + ": the OFF header promises " + std::to_string(promised) + " " +
                          (promised == 1 ? one : many) + " but the file ends after " + std::to_string(index));
       }
+      if (withoutComment(current_).size() > kMaxWordLineBytes) {
+        throw InputError(at() + "line longer than " + std::to_string(kMaxWordLineBytes) +
+                         " bytes (a face of millions of corners?)");
+      }
       std::vector<std::string_view> tokens = splitWhitespace(withoutComment(current_));
       if (!tokens.empty()) return tokens;
     }

@@ -35,6 +35,11 @@ class LineScanner {
   int lineNumber_ = 0;
 };
 
+/// \brief The longest line of a text mesh file split into words: a face of a million corners fits
+/// (about 8 MB). Each word takes 16 bytes, so a 100 MB face line took 38 times the file in
+/// memory before this bound (adversarial review).
+inline constexpr std::size_t kMaxWordLineBytes = std::size_t{16} << 20;
+
 /// \brief Splits at spaces, tabs, '\r', '\v' and '\f'.
 std::vector<std::string_view> splitWhitespace(std::string_view text);
 
