@@ -30,8 +30,11 @@ void requireRigid(const adsd::Pose& pose, int line) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  // Lines as the reader counts them: '\n' ends a line (a '\r' before it is part of the line ending).
-  const int lineCount = static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 1;
+  // Lines as the reader counts them: '\n', "\r\n" or a lone '\r' ends a line.
+  int lineCount = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) ++lineCount;
+  }
   adsd::fuzz::acceptingOnlyInputError(kSource, [&] {
     std::istringstream in(text);
     const std::vector<adsd::io::PosePair> poses = adsd::io::readPoseFile(in, kSource);
