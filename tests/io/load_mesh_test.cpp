@@ -978,6 +978,34 @@ TEST(LoadMeshBadInput, PlyDataBeyondTheHeaderAndRepeatedProperties) {
   EXPECT_EQ(loadError(repeated), repeated + ":5: element vertex declares property x twice");
 }
 
+// ASCII values the header's types cannot hold, and an element declared twice: the third
+// adversarial sweep's loose ends (docs/reliability.md). A uchar count of 300 read a 300-corner
+// face; a second 'element vertex' appended to the first while indices were checked against the
+// second's count alone.
+TEST(LoadMeshBadInput, PlyValuesBeyondTheirTypeAndElementsDeclaredTwice) {
+  TempDir dir;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nproperty short flag\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n";
+  const std::string vertices = "0 0 0 -32768\n1 0 0 32767\n0 1 0 0\n";
+  EXPECT_EQ(loadMesh(dir.write("edges.ply", header + vertices + "3 0 1 2\n")).triangleCount(), 1u);
+  std::string corners = header + vertices + "300";
+  for (int k = 0; k < 300; ++k) corners += k % 3 == 0 ? " 0" : k % 3 == 1 ? " 1" : " 2";
+  const std::string count = dir.write("count.ply", corners + "\n");
+  EXPECT_EQ(loadError(count),
+            count + ":14: face 0: '300' does not fit the length of list vertex_indices's type uint8");
+  const std::string flag = dir.write("flag.ply", header + "0 0 0 32768\n1 0 0 0\n0 1 0 0\n3 0 1 2\n");
+  EXPECT_EQ(loadError(flag), flag + ":11: vertex 0: '32768' does not fit the property flag's type int16");
+  std::string wide = header + "0 0 0 0\n1 0 0 0\n0 1 0 0\n3 0 1 9223372036854775807\n";
+  const std::string index = dir.write("index.ply", wide);
+  EXPECT_EQ(loadError(index),
+            index + ":14: face 0: '9223372036854775807' does not fit the list vertex_indices's type int32");
+  std::string twice = header;
+  twice.replace(twice.find("element face"), 0, "element vertex 1\nproperty float x\n");
+  const std::string second = dir.write("second.ply", twice + vertices + "0\n3 0 1 2\n");
+  EXPECT_EQ(loadError(second), second + ":8: element vertex is declared twice");
+}
+
 // OFF files that are malformed: each named with its line. (Assimp 5.2's OFF reader, used before
 // issue 16, clamped out-of-range indices and zero-filled missing vertices without a word.)
 TEST(LoadMeshBadInput, MalformedOff) {

@@ -47,18 +47,27 @@ struct ScalarType {
   int bytes = 0;
   bool isInteger = false;
   bool isSigned = false;
+  const char* name = "";
+  /// Whether an integer read from ASCII fits the type: a binary file cannot hold a uchar of 300,
+  /// and an ASCII one that says so is damaged (a list of 300 corners behind a uchar count).
+  bool holds(long long value) const {
+    if (!isInteger) return true;
+    const int bits = 8 * bytes;
+    if (isSigned) return bits >= 64 || (value >= -(1LL << (bits - 1)) && value < (1LL << (bits - 1)));
+    return value >= 0 && (bits >= 64 || value < (1LL << bits));
+  }
 };
 
 /// The PLY scalar types, with the sized aliases assimp also accepts. Returns bytes == 0 if unknown.
 ScalarType scalarType(std::string_view name) {
-  if (name == "char" || name == "int8") return {1, true, true};
-  if (name == "uchar" || name == "uint8") return {1, true, false};
-  if (name == "short" || name == "int16") return {2, true, true};
-  if (name == "ushort" || name == "uint16") return {2, true, false};
-  if (name == "int" || name == "int32") return {4, true, true};
-  if (name == "uint" || name == "uint32") return {4, true, false};
-  if (name == "float" || name == "float32") return {4, false, true};
-  if (name == "double" || name == "float64") return {8, false, true};
+  if (name == "char" || name == "int8") return {1, true, true, "int8"};
+  if (name == "uchar" || name == "uint8") return {1, true, false, "uint8"};
+  if (name == "short" || name == "int16") return {2, true, true, "int16"};
+  if (name == "ushort" || name == "uint16") return {2, true, false, "uint16"};
+  if (name == "int" || name == "int32") return {4, true, true, "int32"};
+  if (name == "uint" || name == "uint32") return {4, true, false, "uint32"};
+  if (name == "float" || name == "float32") return {4, false, true, "float32"};
+  if (name == "double" || name == "float64") return {8, false, true, "float64"};
   return {};
 }
 
@@ -137,6 +146,11 @@ class PlyChecker {
           throw InputError(at() + "expected 'element <name> <count>' with a count from 0 to 2^32 - 1");
         }
         if (!isIdentifier(t[1])) throw InputError(at() + "element name " + quoteToken(t[1]) + " is not an identifier");
+        // A second vertex element: would its indices go on from the first one's or start again?
+        // Writers declare each element once; a file that does not is damaged or made to mislead.
+        for (const Element& e : elements_) {
+          if (e.name == t[1]) throw InputError(at() + "element " + e.name + " is declared twice");
+        }
         elements_.push_back({std::string(t[1]), count, {}});
       } else if (t[0] == "property") {
         if (elements_.empty()) throw InputError(at() + "a property before any element");
@@ -277,6 +291,10 @@ class PlyChecker {
           if (!ok) {
             throw InputError(where(e, i) + ": " + quoteToken(t[k]) + " is not " +
                              (type.isInteger ? "an integer" : "a number"));
+          }
+          if (!type.holds(integer)) {
+            throw InputError(where(e, i) + ": " + quoteToken(t[k]) + " does not fit the " + role + " " + p.name +
+                             "'s type " + type.name);
           }
           if (type.isInteger) number = static_cast<double>(integer);
           ++k;
