@@ -1,6 +1,9 @@
 #include "arm_viewer_html.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -27,23 +30,81 @@ std::vector<Pose> bodyPoses(const ArmValidityCheckerBase& checker, const std::ve
   return poses;
 }
 
-/// The page's "up": the axis of the first movable joint in the world at the joint vector \p q,
-/// signed so that the links' centres lie on its positive side of the joint (the arm stands on
-/// its base). A heuristic for drawing only: an arm's base joint turns about the vertical.
+/// An arm's base joint: the robot's movable joint that carries every other one, and per joint
+/// whether it is carried (the base itself included).
+struct BaseJoint {
+  std::size_t joint;
+  std::vector<bool> carried;
+};
+
+/// The robot's base joint, if it has one. All of the description's movable joints count, not only
+/// those planned: one arm of a humanoid has such a joint, the humanoid has none. Linear in the
+/// joints: each joint's answer is found once, by a path up that stops at a joint already answered
+/// (a URDF may hold a chain of thousands of joints).
+std::optional<BaseJoint> baseJoint(const ArmModel& model) {
+  const std::size_t count = model.joints.size();
+  const auto movable = [&](std::size_t j) { return model.joints[j].type != planner::ArmJointType::fixed; };
+  const auto parentOf = [&](std::size_t j) { return model.links[model.joints[j].parentLink].parentJoint; };
+  // The only candidate: the topmost movable joint above (or at) any one movable joint.
+  std::optional<std::size_t> base;
+  for (std::size_t j = 0; j < count && !base; ++j) {
+    if (!movable(j)) continue;
+    for (int k = static_cast<int>(j); k >= 0; k = parentOf(static_cast<std::size_t>(k))) {
+      if (movable(static_cast<std::size_t>(k))) base = static_cast<std::size_t>(k);
+    }
+  }
+  if (!base) return std::nullopt;
+  enum class Answer : std::uint8_t { unknown, carried, notCarried };
+  std::vector<Answer> answers(count, Answer::unknown);
+  answers[*base] = Answer::carried;
+  std::vector<std::size_t> path;
+  for (std::size_t j = 0; j < count; ++j) {
+    path.clear();
+    int k = static_cast<int>(j);
+    while (k >= 0 && answers[static_cast<std::size_t>(k)] == Answer::unknown) {
+      path.push_back(static_cast<std::size_t>(k));
+      k = parentOf(static_cast<std::size_t>(k));
+    }
+    const Answer answer = k >= 0 ? answers[static_cast<std::size_t>(k)] : Answer::notCarried;
+    for (const std::size_t p : path) answers[p] = answer;
+    if (movable(j) && answers[j] != Answer::carried) return std::nullopt;
+  }
+  BaseJoint found{*base, std::vector<bool>(count)};
+  for (std::size_t j = 0; j < count; ++j) found.carried[j] = answers[j] == Answer::carried;
+  return found;
+}
+
+/// The page's "up", a heuristic for drawing only:
+/// - A robot whose movable joints branch before any of them (a humanoid's arms and legs from its
+///   pelvis, a mobile base's wheels and arm) has no base joint: the world's +z, upwards in the ROS
+///   convention (REP 103) its description follows. (The first planned joint's axis, used before,
+///   is a shoulder's or a hip's: Atlas and DRC-Hubo were drawn lying down or upside down.)
+/// - An arm's base joint turns about the vertical, and descriptions mount arms with any axis
+///   upwards (dart-doc's KR5 has +y): the base joint's axis in the world at the joint vector \p q.
+///   Within 45 degrees of the world's z it is signed upwards (REP 103 again: an arm hung from a
+///   ceiling hangs); otherwise so that the links it carries lie on its positive side (the arm
+///   stands on its base).
 Vec3 upDirection(const ArmValidityCheckerBase& checker, const std::vector<double>& q) {
   const ArmModel& model = checker.model();
+  const std::optional<BaseJoint> base = baseJoint(model);
+  if (!base) return Vec3::UnitZ();
   std::vector<Pose> linkPoses;
   planner::forwardKinematics(model, q.data(), linkPoses);
-  const planner::ArmJoint& first = model.joints[model.activeJoints.front()];
+  const planner::ArmJoint& first = model.joints[base->joint];
   // The child's frame is the joint's frame turned about (or moved along) the axis: the axis and
   // the joint's origin read the same in it.
   const Pose& joint = linkPoses[first.childLink];
   Vec3 up = joint.linear() * first.axis;
+  if (std::abs(up.z()) >= std::sqrt(0.5) * up.norm()) return (up.z() > 0.0 ? up : Vec3(-up)).normalized();
   Vec3 centre = Vec3::Zero();
+  std::size_t carried = 0;
   for (std::size_t b = 0; b < checker.linkBodies(); ++b) {
+    const int parent = model.links[checker.linkOfBody(b)].parentJoint;
+    if (parent < 0 || !base->carried[static_cast<std::size_t>(parent)]) continue;
     centre += linkPoses[checker.linkOfBody(b)] * checker.bodyMesh(b).bounds().center();
+    ++carried;
   }
-  centre /= static_cast<double>(std::max<std::size_t>(1, checker.linkBodies()));
+  centre /= static_cast<double>(std::max<std::size_t>(1, carried));
   if (up.dot(centre - joint.translation()) < 0.0) up = -up;
   return up.normalized();
 }

@@ -22,8 +22,9 @@ namespace adsd::app {
 /// clearance, and the closest points of the pair that realizes it, link against obstacle or link
 /// against link (the checked pairs: ArmScene::selfPairs), from adsd::distance. The page draws
 /// each link's collision mesh (ArmValidityCheckerBase::bodyMesh) once and moves it by these
-/// poses; "up" on the page is the first movable joint's axis (an arm's base joint turns about the
-/// vertical), pointing from the base towards the arm at the start. The problem's space must be set
+/// poses; "up" on the page is the axis of the movable joint that carries all others (an arm's base
+/// joint turns about the vertical), pointing from the base towards the arm at the start, or +z for
+/// a robot without one (a humanoid, REP 103). The problem's space must be set
 /// up (SimpleSetup::setup), as it is before solving. Written as writeViewerPage() writes; throws
 /// adsd::InputError naming \p file when it cannot be written.
 ViewerSummary writeArmViewerHtml(const std::string& file, const planner::ArmPlanningProblem& problem,

@@ -335,6 +335,38 @@ TEST(ArmViewCommand, PageOfThePlannedPathShowsThePrintedClearance) {
   EXPECT_NE(ends.out.find("over 2 states: the start and the goal"), std::string::npos) << ends.out;
 }
 
+/// The "up" direction a viewer page draws upwards (its data's "up" array).
+std::vector<double> pageUp(const fs::path& html) {
+  const std::string text = readAll(html);
+  const auto at = text.find("\"up\":[");
+  if (at == std::string::npos) return {};
+  std::istringstream numbers(text.substr(at + 6, text.find(']', at) - at - 6));
+  std::vector<double> up;
+  std::string number;
+  while (std::getline(numbers, number, ',')) up.push_back(std::stod(number));
+  return up;
+}
+
+// The page's up is the base joint's axis for an arm (dart-doc's KR5 stands along +y in its own
+// description) and the world's +z for a robot whose joints branch before any of them: the first
+// planned joint's axis, used before, drew DRC-Hubo upside down (-z, its torso joint with its
+// hands below) and Atlas lying down (x, a shoulder).
+TEST(ArmViewCommand, ArmsStandOnTheirBaseJointAndHumanoidsOnWorldZ) {
+  SKIP_WITHOUT_ROBOTS(otherCfgOf("drchubo_reach"));
+  const fs::path dir = workDirectory();
+  const auto expectUp = [&](const std::string& cfg, const std::vector<double>& expected) {
+    const fs::path html = dir / (fs::path(cfg).parent_path().filename().string() + ".html");
+    const PlanRun v = runAdsd("view", {cfg, "--html", html.string()}, dir);
+    ASSERT_EQ(v.status, 0) << v.err;
+    const std::vector<double> up = pageUp(html);
+    ASSERT_EQ(up.size(), 3u) << cfg;
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(up[k], expected[k], 1e-3) << cfg << " coordinate " << k;
+  };
+  expectUp(otherCfgOf("drchubo_reach"), {0, 0, 1});
+  expectUp(cfgOf("kr5_table_pick"), {0, 1, 0});
+  expectUp(cfgOf("wam_box"), {0, 0, 1});
+}
+
 /// `adsd view kr5_table_pick --path` of a path file holding \p text: exit 2, one line naming
 /// \p where (after the file's name) and saying \p what, nothing on stdout, no page.
 void expectPathRefused(const std::string& text, const std::string& where, const std::string& what) {
