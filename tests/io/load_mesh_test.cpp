@@ -272,6 +272,31 @@ TEST(LoadMeshBadInput, SelfCrossingAndHugeNonConvexPolygons) {
             std::string::npos) << error;
 }
 
+// Ear clipping is quadratic in a polygon's corners, and the per-face cap left the file unbounded:
+// a hundred double-walled spirals of 10 000 corners (1.1 MB; each about 44 million corner tests)
+// took 23 s to read. A file's non-convex polygons share one budget of tests
+// (kClippingTestsPerFile): the eleventh spiral passes it, and the error names that face.
+TEST(LoadMeshBadInput, ManyLargeNonConvexPolygonsPassTheFilesClippingBudget) {
+  TempDir dir;
+  const int half = 5000, faces = 12;
+  std::string text;
+  std::string face = "f";
+  for (int wall = 0; wall < 2; ++wall) {
+    for (int step = 0; step < half; ++step) {
+      const int k = wall == 0 ? step : half - 1 - step;
+      const double angle = 0.05 * k, radius = 1.0 + 0.02 * k + 0.01 * wall;
+      text += "v " + std::to_string(radius * std::cos(angle)) + " " + std::to_string(radius * std::sin(angle)) + " 0\n";
+      face += " " + std::to_string(wall * half + step + 1);
+    }
+  }
+  EXPECT_EQ(loadMesh(dir.write("one.obj", text + face + "\n")).triangleCount(), 2u * half - 2u);
+  for (int k = 0; k < faces; ++k) text += face + "\n";
+  const std::string many = dir.write("many.obj", text);
+  EXPECT_EQ(loadError(many), many + ": face 10 (10000 corners): the file's non-convex polygons need more than the "
+                                    "500000000 corner tests this reader spends clipping ears in one file: split them "
+                                    "into triangles first");
+}
+
 // A UTF-8 byte-order mark (Windows editors write one) before a text format's first line: an OBJ
 // starting "<BOM>v 0 0 0" lost that vertex (an unknown statement, skipped), and a face naming it
 // then pointed at another. Every text format reads the same mesh with it as without.

@@ -141,6 +141,7 @@ Mesh meshFromSoup(PolygonSoup soup, const std::string& path) {
   };
   std::vector<Vec3> polygon;  // a polygon's corners, and its triangles, for triangulatePolygon
   std::vector<std::array<std::uint32_t, 3>> pieces;
+  std::uint64_t clippingTestsLeft = kClippingTestsPerFile;
   for (std::size_t p = 0; p < soup.polygonCount(); ++p) {
     const std::uint64_t begin = soup.starts[p], end = soup.starts[p + 1];
     const std::uint64_t n = end - begin;
@@ -158,10 +159,17 @@ Mesh meshFromSoup(PolygonSoup soup, const std::string& path) {
       polygon.push_back(soup.points[soup.corners[k]]);
     }
     pieces.clear();
-    if (triangulatePolygon(polygon, pieces) == PolygonKind::tooLarge) {
+    const PolygonKind kind = triangulatePolygon(polygon, pieces, clippingTestsLeft);
+    if (kind == PolygonKind::tooLarge) {
       throw InputError(path + ": face " + std::to_string(p) + " is a non-convex polygon of " + std::to_string(n) +
                        " corners, more than the " + std::to_string(kMaxClippedCorners) +
                        " this reader triangulates: split it into triangles first");
+    }
+    if (kind == PolygonKind::outOfTests) {
+      throw InputError(path + ": face " + std::to_string(p) + " (" + std::to_string(n) +
+                       " corners): the file's non-convex polygons need more than the " +
+                       std::to_string(kClippingTestsPerFile) +
+                       " corner tests this reader spends clipping ears in one file: split them into triangles first");
     }
     for (const std::array<std::uint32_t, 3>& t : pieces) {
       triangles.push_back({vertexFor(soup.corners[begin + t[0]], p), vertexFor(soup.corners[begin + t[1]], p),

@@ -1,5 +1,6 @@
 #include "polygon_triangulation.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace adsd::io::detail {
@@ -32,7 +33,8 @@ void fan(const std::vector<std::uint32_t>& order, std::vector<std::array<std::ui
 
 }  // namespace
 
-PolygonKind triangulatePolygon(const std::vector<Vec3>& corners, std::vector<std::array<std::uint32_t, 3>>& triangles) {
+PolygonKind triangulatePolygon(const std::vector<Vec3>& corners, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                               std::uint64_t& testsLeft) {
   const std::size_t n = corners.size();
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
@@ -74,10 +76,12 @@ PolygonKind triangulatePolygon(const std::vector<Vec3>& corners, std::vector<std
     previous[i] = static_cast<std::uint32_t>((i + n - 1) % n);
     next[i] = static_cast<std::uint32_t>((i + 1) % n);
   }
+  std::uint64_t tests = 0;
   auto isEar = [&](std::uint32_t i) {
     const std::uint32_t a = previous[i], c = next[i];
     if (!(cross(p[a], p[i], p[c]) > 0.0)) return false;  // turns the other way, or not at all
     for (std::uint32_t j = next[c]; j != a; j = next[j]) {
+      ++tests;
       if (same(p[j], p[a]) || same(p[j], p[i]) || same(p[j], p[c])) continue;
       if (inTriangle(p[j], p[a], p[i], p[c])) return false;
     }
@@ -87,6 +91,11 @@ PolygonKind triangulatePolygon(const std::vector<Vec3>& corners, std::vector<std
   std::uint32_t i = 0;
   std::size_t tried = 0;  // corners tried since the last ear
   while (left > 3) {
+    // Counted per corner tried, each at most `left` tests: a few more than the budget at worst.
+    if (tests > testsLeft) {
+      testsLeft = 0;
+      return PolygonKind::outOfTests;
+    }
     if (isEar(i)) {
       triangles.push_back({previous[i], i, next[i]});
       next[previous[i]] = next[i];
@@ -100,11 +109,13 @@ PolygonKind triangulatePolygon(const std::vector<Vec3>& corners, std::vector<std
       std::vector<std::uint32_t> rest;
       for (std::size_t k = 0; k < left; ++k, i = next[i]) rest.push_back(i);
       fan(rest, triangles);
+      testsLeft -= std::min(tests, testsLeft);
       return PolygonKind::clipped;
     }
     i = next[i];
   }
   triangles.push_back({previous[i], i, next[i]});
+  testsLeft -= std::min(tests, testsLeft);
   return PolygonKind::clipped;
 }
 
