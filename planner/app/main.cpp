@@ -1,5 +1,6 @@
 // The `adsd` program: `adsd <command> [arguments]`, one file per command (see commands.h).
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -45,9 +46,25 @@ void printUsage(std::ostream& out) {
          "adsd <command> --help describes one command.\n";
 }
 
+// Runs a command and makes a standard output that could not be written its failure: a full disk
+// or a file-size limit otherwise lost the plan's report with exit status 0.
+int runAndCheckOutput(const Command& command, const std::vector<std::string>& args) {
+  const int status = command.run(args);
+  std::cout.flush();
+  std::fflush(stdout);
+  if (status == 0 && (!std::cout || std::ferror(stdout))) {
+    std::cerr << "adsd " << command.name << ": error: cannot write the standard output\n";
+    return 1;
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f) the kernel's SIGXFSZ killed the program without a word and
+  // left a half-written page behind; ignored, the write fails instead and is reported as one.
+  std::signal(SIGXFSZ, SIG_IGN);
   const std::vector<std::string> args(argv + 1, argv + argc);
   // A bad command line is one line and exit status 2, as in every command (adsd::cli).
   if (args.empty()) {
@@ -64,7 +81,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   for (const Command& c : kCommands) {
-    if (name == c.name) return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
+    if (name == c.name) return runAndCheckOutput(c, std::vector<std::string>(args.begin() + 1, args.end()));
   }
   std::cerr << "adsd: error: unknown command '" << name << "' (adsd --help lists the commands)\n";
   return 2;

@@ -15,7 +15,14 @@ void writeOutputFile(const std::string& path, const std::string& what, const std
     // line-ending translation on any platform.
     std::ofstream out(temporary, std::ios::binary);
     if (!out) throw InputError(path + ": cannot write the " + what);
-    body(out);
+    try {
+      body(out);
+    } catch (...) {
+      // Nothing half-written is left behind, whatever stopped the body.
+      out.close();
+      std::remove(temporary.c_str());
+      throw;
+    }
     out.flush();
     if (!out) {
       out.close();

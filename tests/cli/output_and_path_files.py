@@ -16,11 +16,13 @@ refused by `adsd plan` and shown, with a warning naming its line, by `adsd view`
 --out` does not make a missing parent directory, and says so of a file. Outputs over the meshes a
 problem file names, and inputs without end (/dev/zero), are refused.
 `adsd plan`'s least clearance along the path, between its states too, finds where a discrete path
-steps over the thin wall.
+steps over the thin wall. Past a file-size limit (ulimit -f), a page, a report and the standard
+output are failures said in one line (exit status 2 or 1), not a silent kill leaving a .partial.
 """
 import math
 import os
 import pathlib
+import resource
 import subprocess
 import sys
 import tempfile
@@ -196,6 +198,29 @@ def main():
                                   "collision (clearance 0"), f"view of a start in collision: stderr {r.stderr!r}")
         check("clearance   min 0 " in r.stdout, f"view of a start in collision: stdout {r.stdout!r}")
         check(os.path.isfile(shown), "view of a start in collision wrote no page")
+
+        # Past a file-size limit the kernel's SIGXFSZ killed adsd silently (exit 153 from a shell)
+        # and left capped.html.partial; the failed write is now an error and nothing is left.
+        def capped(args, limit, stdout):
+            def lower_limit():
+                resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+            return subprocess.run([adsd] + args, stdout=stdout, stderr=subprocess.PIPE, text=True, timeout=300,
+                                  cwd=work, preexec_fn=lower_limit)
+        r = capped(["view", office, "--html", "capped.html"], 64 * 1024, subprocess.PIPE)
+        check(r.returncode == 2 and r.stderr == "adsd view: error: capped.html: writing the viewer page failed\n",
+              f"view past a file-size limit: exit {r.returncode}, stderr {r.stderr!r}")
+        check(not any(name.startswith("capped.html") for name in os.listdir(work)),
+              f"view past a file-size limit left {sorted(n for n in os.listdir(work) if n.startswith('capped'))}")
+        poses = os.path.join(work, "many.poses")
+        pathlib.Path(poses).write_text("".join(f"0 0 {i * 0.001!r} 1 0 0 0 0 0 0 1 0 0 0\n" for i in range(2000)))
+        with open(os.path.join(work, "many.out"), "w") as out:
+            r = capped(["distance", robot, world, "--poses", poses], 64 * 1024, out)
+        check(r.returncode == 1 and r.stderr == "adsd distance: error: cannot write the output\n",
+              f"distance past a file-size limit: exit {r.returncode}, stderr {r.stderr!r}")
+        with open(os.path.join(work, "plan.out"), "w") as out:
+            r = capped(["plan", office, "--time", "1", "--seed", "1"], 100, out)
+        check(r.returncode == 1 and r.stderr == "adsd plan: error: cannot write the standard output\n",
+              f"plan past a file-size limit: exit {r.returncode}, stderr {r.stderr!r}")
     for f in failures:
         print("FAIL:", f)
     print(f"{len(failures)} failure(s)")
