@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "adsd/error.h"
 #include "adsd/tolerances.h"
 #include "adsd/planner/state_pose.h"
+#include "ompl/base/spaces/SE2StateSpace.h"
+#include "ompl/base/spaces/SE3StateSpace.h"
 
 namespace adsd::planner {
 
@@ -27,6 +30,18 @@ RigidBodyValidityChecker::RigidBodyValidityChecker(const ompl::base::SpaceInform
   if (!std::isfinite(safetyMargin_) || safetyMargin_ < 0.0) {
     throw InputError("validity checker: the safety margin must be finite and >= 0, got " +
                      std::to_string(safetyMargin_));
+  }
+  // States are read as the scene's space says: an SE(3) scene over an SE(2) space read past each
+  // state's memory, and an SE(2) scene over an SE(3) space ignored z (outside review).
+  const ompl::base::StateSpace* space = si->getStateSpace().get();
+  const bool matches = scene_->space == RigidBodySpace::se2
+                           ? dynamic_cast<const ompl::base::SE2StateSpace*>(space) != nullptr
+                           : dynamic_cast<const ompl::base::SE3StateSpace*>(space) != nullptr;
+  if (!matches) {
+    throw InputError(std::string("validity checker: the scene is ") +
+                     (scene_->space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)") + " but the space is '" +
+                     space->getName() + "', not an " +
+                     (scene_->space == RigidBodySpace::se2 ? "SE2StateSpace" : "SE3StateSpace"));
   }
   robotRadius_ = planner::robotRadius(*scene_);
   scale_ = sceneScale(*scene_);

@@ -395,5 +395,20 @@ TEST(CheckerSettings, StatesThatAreNotNumbersAreInvalidAtClearanceZero) {
   EXPECT_NO_THROW(EXPECT_EQ(solid.clearance(t.get()), 0.0));
 }
 
+// An SE(3) scene over an SE(2) space read past each state's memory (valgrind: invalid reads in
+// poseFromState), and an SE(2) scene over an SE(3) space ignored z: both are refused when built.
+TEST(CheckerSpace, ASpaceOfTheOtherKindIsRefused) {
+  const SceneFixture office = test::officeFixture();
+  ASSERT_EQ(office.scene->space, RigidBodySpace::se2);
+  auto se3 = std::make_shared<ompl::base::SE3StateSpace>();
+  se3->setBounds(ompl::base::RealVectorBounds(3));
+  auto se3Information = std::make_shared<ompl::base::SpaceInformation>(se3);
+  EXPECT_THROW(MeshValidityChecker(se3Information, office.scene), InputError);
+  auto lifted = std::make_shared<RigidBodyScene>(*office.scene);
+  lifted->space = RigidBodySpace::se3;
+  EXPECT_THROW(MeshValidityChecker(office.si, lifted), InputError);
+  EXPECT_NO_THROW(MeshValidityChecker(office.si, office.scene));
+}
+
 }  // namespace
 }  // namespace adsd::planner
