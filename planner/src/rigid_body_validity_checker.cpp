@@ -5,11 +5,12 @@
 #include <limits>
 #include <string>
 
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/base/spaces/SE3StateSpace.h>
+
 #include "adsd/error.h"
 #include "adsd/tolerances.h"
 #include "adsd/planner/state_pose.h"
-#include "ompl/base/spaces/SE2StateSpace.h"
-#include "ompl/base/spaces/SE3StateSpace.h"
 
 namespace adsd::planner {
 
@@ -34,14 +35,13 @@ RigidBodyValidityChecker::RigidBodyValidityChecker(const ompl::base::SpaceInform
   // States are read as the scene's space says: an SE(3) scene over an SE(2) space read past each
   // state's memory, and an SE(2) scene over an SE(3) space ignored z (outside review).
   const ompl::base::StateSpace* space = si->getStateSpace().get();
-  const bool matches = scene_->space == RigidBodySpace::se2
-                           ? dynamic_cast<const ompl::base::SE2StateSpace*>(space) != nullptr
-                           : dynamic_cast<const ompl::base::SE3StateSpace*>(space) != nullptr;
+  const bool planar = scene_->space == RigidBodySpace::se2;
+  const bool matches = planar ? dynamic_cast<const ompl::base::SE2StateSpace*>(space) != nullptr
+                              : dynamic_cast<const ompl::base::SE3StateSpace*>(space) != nullptr;
   if (!matches) {
-    throw InputError(std::string("validity checker: the scene is ") +
-                     (scene_->space == RigidBodySpace::se2 ? "SE(2)" : "SE(3)") + " but the space is '" +
-                     space->getName() + "', not an " +
-                     (scene_->space == RigidBodySpace::se2 ? "SE2StateSpace" : "SE3StateSpace"));
+    throw InputError(std::string("validity checker: the scene is ") + (planar ? "SE(2)" : "SE(3)") +
+                     " but the space is '" + space->getName() + "', not an " +
+                     (planar ? "SE2StateSpace" : "SE3StateSpace"));
   }
   robotRadius_ = planner::robotRadius(*scene_);
   scale_ = sceneScale(*scene_);

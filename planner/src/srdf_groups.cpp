@@ -93,6 +93,12 @@ std::optional<std::vector<std::string>> srdfGroupJoints(const ArmModel& model, c
   for (const std::size_t i : model.activeJoints) {
     if (joints.count(i) != 0) names.push_back(model.joints[i].name);
   }
+  // Nothing to plan is a mistake in the file: planning every joint instead, as without a group,
+  // would move what the user meant to hold.
+  if (names.empty()) {
+    throw InputError(srdfPath + ":" + std::to_string(element->Row()) + ": group '" + group +
+                     "' names no movable joint of robot '" + model.name + "'");
+  }
   return names;
 }
 

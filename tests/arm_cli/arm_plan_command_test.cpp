@@ -814,6 +814,14 @@ TEST(ArmPlanningProblem, OnlyTheRequestsGroupIsPlannedTheOtherJointsHeld) {
   std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><joint name='elbow'/></group>\n</robot>\n";
   EXPECT_EQ(armProblemError(cfg), (dir / "two.srdf").string() + ":2: group names joint 'elbow', which " +
                                       (dir / "two.urdf").string() + " lacks");
+  // A group that moves nothing (empty, or only the root link, which no joint carries) is refused
+  // at its line: it planned every joint of the robot, silently (outside review).
+  for (const char* group : {"<group name='arm'/>", "<group name='arm'><link name='base'/></group>"}) {
+    std::ofstream(dir / "two.srdf") << "<robot name='two'>\n" << group << "\n</robot>\n";
+    EXPECT_EQ(armProblemError(cfg), (dir / "two.srdf").string() +
+                                        ":2: group 'arm' names no movable joint of robot 'two'")
+        << group;
+  }
   // Planned, the path file names the group's joint only.
   std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><joint name='swing'/></group>\n</robot>\n";
   writeRequest(dir, "yaw, swing", "0.3, 0", {{"swing", "0.8"}});
