@@ -46,14 +46,13 @@ void printUsage(std::ostream& out) {
          "adsd <command> --help describes one command.\n";
 }
 
-// Runs a command and makes a standard output that could not be written its failure: a full disk
-// or a file-size limit otherwise lost the plan's report with exit status 0.
-int runAndCheckOutput(const Command& command, const std::vector<std::string>& args) {
-  const int status = command.run(args);
+// Makes a standard output that could not be written the failure of what printed it (\p who): a
+// full disk or a file-size limit otherwise lost the plan's report with exit status 0.
+int checkOutput(int status, const std::string& who) {
   std::cout.flush();
   std::fflush(stdout);
   if (status == 0 && (!std::cout || std::ferror(stdout))) {
-    std::cerr << "adsd " << command.name << ": error: cannot write the standard output\n";
+    std::cerr << who << ": error: cannot write the standard output\n";
     return 1;
   }
   return status;
@@ -74,14 +73,16 @@ int main(int argc, char** argv) {
   const std::string& name = args.front();
   if (name == "--help" || name == "-h" || name == "help") {
     printUsage(std::cout);
-    return 0;
+    return checkOutput(0, "adsd");
   }
   if (name == "--version") {
     std::cout << "adsd " << ADSD_VERSION << '\n';
-    return 0;
+    return checkOutput(0, "adsd");
   }
   for (const Command& c : kCommands) {
-    if (name == c.name) return runAndCheckOutput(c, std::vector<std::string>(args.begin() + 1, args.end()));
+    if (name == c.name) {
+      return checkOutput(c.run(std::vector<std::string>(args.begin() + 1, args.end())), std::string("adsd ") + c.name);
+    }
   }
   std::cerr << "adsd: error: unknown command '" << name << "' (adsd --help lists the commands)\n";
   return 2;

@@ -221,6 +221,13 @@ def main():
             r = capped(["plan", office, "--time", "1", "--seed", "1"], 100, out)
         check(r.returncode == 1 and r.stderr == "adsd plan: error: cannot write the standard output\n",
               f"plan past a file-size limit: exit {r.returncode}, stderr {r.stderr!r}")
+        # The program's own help and version were printed outside that check: exit 0 into a full
+        # disk, as for every command before (outside review).
+        with open("/dev/full", "w") as full:
+            for args in (["--version"], ["--help"], ["plan", "--help"]):
+                r = subprocess.run([adsd] + args, stdout=full, stderr=subprocess.PIPE, text=True, timeout=60)
+                check(r.returncode == 1 and r.stderr.endswith("error: cannot write the standard output\n"),
+                      f"{' '.join(args)} into a full disk: exit {r.returncode}, stderr {r.stderr!r}")
     for f in failures:
         print("FAIL:", f)
     print(f"{len(failures)} failure(s)")
