@@ -138,7 +138,8 @@ struct BenchmarkArguments {
 /// Returns nullopt after printing the help.
 std::optional<BenchmarkArguments> parseArguments(const std::vector<std::string>& args) {
   constexpr std::uint64_t kMaxRuns = std::numeric_limits<unsigned>::max();  // OMPL counts runs in unsigned int
-  constexpr std::uint64_t kMaxSeed = std::numeric_limits<std::uint32_t>::max();
+  // OMPL's seed type, std::uint_fast32_t, is 64 bits on Linux, and its own seeds fill it.
+  constexpr std::uint64_t kMaxSeed = std::numeric_limits<std::uint_fast32_t>::max();
   cli::CommandLine line("adsd benchmark", kSynopsis, kDescription, kDetails);
   line.options()
       ("planner", cli::value("NAME[,NAME]"),
@@ -147,7 +148,7 @@ std::optional<BenchmarkArguments> parseArguments(const std::vector<std::string>&
       ("motion", cli::value("discrete|certified|both"), "motion validators (default both)")
       ("runs", cli::value("N"), "runs per planner and combination (default: [benchmark] run_count; arm: 10)")
       ("run-range", cli::value("A:B"), "this shard's runs: indices A to B-1 (seed A+1 unless --seed)")
-      ("seed", cli::value("S"), "OMPL's random seed (1 to 4294967295; default: OMPL's own)")
+      ("seed", cli::value("S"), "OMPL's random seed (from 1; default: OMPL's own)")
       ("time", cli::value("SECONDS"),
        "time limit per run, > 0 (default: [benchmark] time_limit; arm: allowed_planning_time, else 10)")
       ("out", cli::value("DIR"), "output directory (default: [benchmark] output, else the current one)")

@@ -16,6 +16,7 @@
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,7 +54,7 @@ struct PlanArguments {
   MotionKind motion = MotionKind::discrete;
   std::optional<std::string> pathFile;
   std::optional<std::string> htmlFile;  // the browser viewer (viewer_html.h)
-  std::optional<std::uint32_t> seed;
+  std::optional<std::uint64_t> seed;
   bool simplify = true;
 };
 
@@ -83,8 +84,8 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
       ("checker", cli::value("adsd|fcl"), "state validity checker (default adsd)")
       ("motion", cli::value("discrete|certified"), "motion validator (default discrete)")
       ("seed", cli::value("S"),
-       "OMPL's random seed (1 to 4294967295; default: OMPL's own), so that runs with either checker can be "
-       "repeated and compared on the same random draws")
+       "OMPL's random seed (from 1; default: OMPL's own, printed so that it can be given back), so that runs "
+       "with either checker can be repeated and compared on the same random draws")
       ("no-simplify",
        "report and write the planner's path as found (comparisons of planning time need not wait for the "
        "simplifier, which is given the time limit again and may run past it to finish the step under way; a path "
@@ -111,8 +112,9 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
   if (const auto motion = given->choice("motion", {"discrete", "certified"})) {
     a.motion = *motion == "discrete" ? MotionKind::discrete : MotionKind::certified;
   }
-  // OMPL's generator takes no seed 0.
-  if (const auto seed = given->whole("seed", 1, 4294967295ULL)) a.seed = static_cast<std::uint32_t>(*seed);
+  // OMPL's generator takes no seed 0, and its own seeds (microseconds of the clock) fill its seed
+  // type, std::uint_fast32_t (64 bits on Linux): any seed it prints is taken back.
+  a.seed = given->whole("seed", 1, std::numeric_limits<std::uint_fast32_t>::max());
   a.simplify = !given->has("no-simplify");
   a.pathFile = given->outputFile("path");
   a.htmlFile = given->outputFile("html");
@@ -364,7 +366,7 @@ int plan(const std::vector<std::string>& args) {
   if (!parsed) return 0;  // the help
   const PlanArguments& a = *parsed;
   // Before anything draws a random number: OMPL seeds every new generator from one seeded one.
-  if (a.seed) ompl::RNG::setSeed(*a.seed);
+  if (a.seed) ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(*a.seed));
   if (isArmProblemFile(a.problem)) return planArm(a);
   const ProblemFile file = readProblemFile(a.problem);
   for (const std::string& w : file.warnings) std::cerr << "adsd plan: warning: " << w << '\n';
