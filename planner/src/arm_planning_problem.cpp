@@ -231,13 +231,17 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     }
     return nullptr;
   };
-  const auto standsBy = [&request](const ArmJoint& j) {
-    if (j.locked && j.lower != j.upper && j.mimics.empty()) {
-      return "the start state, outside planning group '" + request.groupName + "'";
-    }
-    return j.locked ? std::string(j.mimics.empty() ? "its limits, which are equal"
-                                                   : "joint '" + j.mimics + "', which is locked")
-                    : "joint '" + j.mimics + "', which it mimics";
+  // Why a joint that is no coordinate stands where it does: its equal limits, the start state
+  // outside the group, or its leader, which may itself be held there.
+  const std::string held = "the start state, outside planning group '" + request.groupName + "'";
+  const auto standsBy = [&](const ArmJoint& j) {
+    if (j.mimics.empty()) return j.lower == j.upper ? std::string("its limits, which are equal") : held;
+    const std::string follows = "joint '" + j.mimics + "', which it mimics";
+    if (!j.locked) return follows;
+    const auto leader = std::find_if(model_->joints.begin(), model_->joints.end(),
+                                     [&j](const ArmJoint& l) { return l.name == j.mimics; });
+    const bool leaderHeld = leader != model_->joints.end() && leader->lower != leader->upper;
+    return leaderHeld ? follows + ", held at " + held : "joint '" + j.mimics + "', which is locked";
   };
   for (const auto& [joint, value] : request.start) {
     bool known = false;

@@ -833,6 +833,34 @@ TEST(ArmPlanningProblem, OnlyTheRequestsGroupIsPlannedTheOtherJointsHeld) {
   EXPECT_EQ(header, "# joints: swing");
 }
 
+// A mimic joint whose leader is held outside the planning group stands where the held leader puts
+// it, and is said to: it was called locked, as if its leader's limits were equal (outside review).
+TEST(ArmPlanningProblem, AMimicOfAHeldJointIsSaidToFollowItsHeldLeader) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "tail.urdf")
+      << "<robot name='tail'>\n"
+         "  <link name='base'><collision><geometry><box size='0.2 0.2 0.2'/></geometry></collision></link>\n"
+         "  <link name='a'/>\n  <link name='b'/>\n"
+         "  <joint name='yaw' type='revolute'><parent link='base'/><child link='a'/><axis xyz='0 0 1'/>"
+         "<limit lower='-2' upper='2' effort='1' velocity='1'/></joint>\n"
+         "  <joint name='swing' type='revolute'><parent link='a'/><child link='b'/><axis xyz='0 1 0'/>"
+         "<limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
+         "  <link name='t'/>\n"
+         "  <joint name='tail' type='revolute'><parent link='b'/><child link='t'/><axis xyz='1 0 0'/>"
+         "<limit lower='-2' upper='2' effort='1' velocity='1'/><mimic joint='yaw'/></joint>\n"
+         "</robot>\n";
+  std::ofstream(dir / "tail.srdf") << "<robot name='tail'>\n<group name='arm'><joint name='swing'/></group>\n</robot>\n";
+  writeRequest(dir, "yaw, swing, tail", "0.3, 0, 0.9", {{"swing", "0.5"}});
+  const std::string cfg = problemAmongNoObstacles(dir, "tail.urdf");
+  std::ofstream(cfg, std::ios::app) << "srdf = tail.srdf\n";
+  const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+  EXPECT_EQ(p.model().dof(), 1u);
+  ASSERT_EQ(p.warnings().size(), 1u);
+  EXPECT_EQ(p.warnings()[0], (dir / "request.yaml").string() +
+                                 ":5: start joint 'tail' stands at 0.3 by joint 'yaw', which it mimics, held at the "
+                                 "start state, outside planning group 'arm', not at 0.9 as given");
+}
+
 // A goal just outside a joint's limit but within its tolerance of it is taken at the limit, as
 // MoveIt samples a joint goal within its tolerance and the limits; farther out it is refused.
 TEST(ArmPlanningProblem, AGoalOutsideALimitWithinItsToleranceIsTakenAtTheLimit) {
