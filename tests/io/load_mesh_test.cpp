@@ -389,6 +389,16 @@ TEST(LoadMesh, OffWithoutKeywordWithCommentsAndBlankLines) {
   expectBounds(mesh, Vec3(0, 0, 0), Vec3(2, 2, 0));
 }
 
+// Keywords in capitals, as some CAD exporters write them: the format sniffing took "SOLID" for
+// ASCII STL, and the reader then refused it.
+TEST(LoadMesh, AsciiStlInCapitals) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("caps.stl",
+                                       "SOLID CAPS\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\n"
+                                       "VERTEX 1 0 0\nVERTEX 0 1 0\nENDLOOP\nENDFACET\nEndSolid CAPS\n"));
+  EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+
 TEST(LoadMesh, AsciiStlWithUtf8Name) {
   TempDir dir;
   const Mesh mesh = loadMesh(dir.write("named.stl",
@@ -1121,6 +1131,15 @@ TEST(LoadMeshBadInput, MalformedObjStlAndPlyNameTheLine) {
       loadError(dir.write("far_back.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9223372036854775808\n"));
   EXPECT_NE(farBack.find("far_back.obj:4: face corner '-9223372036854775808' counts back past the first vertex"),
             std::string::npos) << farBack;
+  // A corner's texture and normal indices are not used, but a word there was a mistake taken silently.
+  for (const char* corner : {"2/x", "2/1/x", "2//n", "2/1/1/1"}) {
+    const std::string tail = loadError(dir.write("tail.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 ") + corner +
+                                                                 " 3\n"));
+    EXPECT_NE(tail.find("tail.obj:4: face corner '" + std::string(corner) +
+                        "': expected i, i/t, i/t/n or i//n, each a whole number"),
+              std::string::npos)
+        << tail;
+  }
   const std::string zero = loadError(dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
   EXPECT_NE(zero.find("zero.obj:4: face corner '0'"), std::string::npos) << zero;
   const std::string far = loadError(dir.write("far.obj", "v 0 0 0\nv 1 0 0\nv 0 -2e75 0\nf 1 2 3\n"));

@@ -8,11 +8,13 @@
 // rounds correctly, and a bad line is reported with its number.
 //
 // What is read: "v x y z" (values after the third, such as w or a colour, ignored) and "f" with
-// corners written i, i/t, i/t/n or i//n, indices from 1, negative ones counting back from the
-// last vertex read. "l" (lines) and "p" (points) are counted, not surfaces; every other statement
-// (vt, vn, o, g, s, usemtl, mtllib, ...) is ignored, as are comments from '#'. An index may refer
-// to a vertex defined later in the file; one beyond the last vertex is an error naming its line.
+// corners written i, i/t, i/t/n or i//n (t and n not used, but each a whole number or empty),
+// indices from 1, negative ones counting back from the last vertex read. "l" (lines) and "p"
+// (points) are counted, not surfaces; every other statement (vt, vn, o, g, s, usemtl, mtllib, ...)
+// is ignored, as are comments from '#'. An index may refer to a vertex defined later in the file;
+// one beyond the last vertex is an error naming its line.
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -94,6 +96,24 @@ class ObjReader {
     soup_.points.push_back(p);
   }
 
+  /// The texture and normal indices after a corner's vertex index (from \p start): not used, but
+  /// a word or a fourth index there is a mistake in the file, not something to pass over.
+  void requireTextureAndNormalIndices(std::string_view corner, std::size_t start) const {
+    std::size_t parts = 0;
+    bool whole = true;
+    for (std::size_t slash = start; slash < corner.size() && whole; ++parts) {
+      const std::size_t end = std::min(corner.find('/', slash + 1), corner.size());
+      const std::string_view index = corner.substr(slash + 1, end - slash - 1);  // empty in "i//n" and "i/"
+      long long value = 0;
+      whole = index.empty() || parseInteger(index, value);
+      slash = end;
+    }
+    if (!whole || parts > 2) {
+      throw InputError(at() + "face corner " + quoteToken(corner) +
+                       ": expected i, i/t, i/t/n or i//n, each a whole number");
+    }
+  }
+
   /// A face, line or point element: corners "i", "i/t", "i/t/n" or "i//n".
   void readElement(const std::vector<std::string_view>& tokens) {
     if (tokens.size() < 2) throw InputError(at() + "'" + std::string(tokens[0]) + "' without vertex indices");
@@ -109,6 +129,7 @@ class ObjReader {
         throw InputError(at() + "face corner " + quoteToken(tokens[k]) +
                          " does not start with a vertex index (from 1, or negative counting back)");
       }
+      requireTextureAndNormalIndices(tokens[k], corner.size());
       if (index < 0) {
         // Compared as index < -defined: negating index itself overflows for the most negative
         // long long, which a file may well hold.

@@ -34,6 +34,17 @@ std::string shortest(double x) {
   return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
 }
 
+/// Whether \p word is the keyword \p lower in any case: some CAD exporters write "SOLID" and
+/// "FACET NORMAL", which the format sniffing (file_checks.cpp) already takes for ASCII STL.
+bool isKeyword(std::string_view word, std::string_view lower) {
+  if (word.size() != lower.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i) {
+    const char c = word[i];
+    if ((c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c) != lower[i]) return false;
+  }
+  return true;
+}
+
 /// The words of an ASCII STL with the line each is on.
 class WordScanner {
  public:
@@ -68,13 +79,13 @@ class AsciiStlReader {
     std::string_view word;
     bool inSolid = false;
     while (words_.next(word)) {
-      if (word == "solid" && !inSolid) {
+      if (isKeyword(word, "solid") && !inSolid) {
         inSolid = true;
         words_.skipRestOfLine();  // the solid's name, any words
-      } else if (word == "endsolid" && inSolid) {
+      } else if (isKeyword(word, "endsolid") && inSolid) {
         inSolid = false;
         words_.skipRestOfLine();
-      } else if (word == "facet" && inSolid) {
+      } else if (isKeyword(word, "facet") && inSolid) {
         readFacet();
       } else {
         throw InputError(at() + "expected " + (inSolid ? "'facet' or 'endsolid'" : "'solid'") + ", got " +
@@ -92,7 +103,7 @@ class AsciiStlReader {
   void expect(std::string_view wanted) {
     std::string_view word;
     if (!words_.next(word)) throw InputError(path_ + ": the file ends inside a facet, before '" + std::string(wanted) + "'");
-    if (word != wanted) {
+    if (!isKeyword(word, wanted)) {
       throw InputError(at() + "expected '" + std::string(wanted) + "', got " + quoteToken(word));
     }
   }
