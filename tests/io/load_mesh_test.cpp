@@ -599,6 +599,14 @@ TEST(LoadMeshBadInput, EmptyFile) {
   }
 }
 
+// A /proc or /sys file says its size is 0 but holds text: "the file is empty" was untrue.
+TEST(LoadMeshBadInput, AFileOfSizeZeroThatIsNotEmptyIsSaidToBeOne) {
+  if (!std::ifstream("/proc/self/status").is_open()) GTEST_SKIP() << "no /proc";
+  EXPECT_EQ(loadError("/proc/self/status"),
+            "/proc/self/status: reports a size of 0 but holds data (a /proc or /sys file?): copy it to a regular "
+            "file");
+}
+
 TEST(LoadMeshBadInput, TruncatedBinaryStl) {
   TempDir dir;
   const std::string whole = binaryStl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 1, 0, 1, 0, 1, 1}}, 2);

@@ -73,7 +73,14 @@ std::uintmax_t requireReadableFile(const std::string& path) {
 
   const std::uintmax_t size = fs::file_size(path, ec);
   if (ec) throw InputError(path + ": cannot be examined: " + ec.message());
-  if (size == 0) throw InputError(path + ": the file is empty");
+  if (size == 0) {
+    // Files of /proc and /sys report size 0 and are read to their end, not to a size.
+    if (probe.get() != std::ifstream::traits_type::eof()) {
+      throw InputError(path +
+                       ": reports a size of 0 but holds data (a /proc or /sys file?): copy it to a regular file");
+    }
+    throw InputError(path + ": the file is empty");
+  }
   return size;
 }
 
