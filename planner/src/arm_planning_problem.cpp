@@ -22,6 +22,7 @@
 #if ADSD_PLANNER_HAS_FCL
 #include "adsd/planner/fcl_arm_validity_checker.h"
 #endif
+#include "input_file.h"
 
 namespace adsd::planner {
 
@@ -32,8 +33,13 @@ bool isArmProblemFile(const std::string& path) {
   // Not a regular file (/dev/zero, one line without end): readProblemFile refuses it by name.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return false;
-  std::ifstream in(path);
-  if (!in) return false;
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return false;
+  std::ostringstream whole;
+  whole << file.rdbuf();
+  std::string text = whole.str();
+  takeLoneCarriageReturnsAsLineEnds(text);
+  std::istringstream in(text);
   std::string line, section;
   while (std::getline(in, line)) {
     const auto first = line.find_first_not_of(" \t\r");

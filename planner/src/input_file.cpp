@@ -1,5 +1,6 @@
 #include "input_file.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,6 +11,10 @@ namespace adsd::planner {
 
 void dropByteOrderMark(std::string& text) {
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+}
+
+void takeLoneCarriageReturnsAsLineEnds(std::string& text) {
+  if (text.find('\n') == std::string::npos) std::replace(text.begin(), text.end(), '\r', '\n');
 }
 
 std::string readInputFile(const std::string& path, const std::string& what) {

@@ -15,4 +15,8 @@ std::string readInputFile(const std::string& path, const std::string& what);
 /// it is no part of the first line.
 void dropByteOrderMark(std::string& text);
 
+/// \brief Makes the line ends of a file of classic Mac OS text (CR alone, and no LF anywhere) LF,
+/// as the mesh readers take them (adsd/io/src/text_scan.h); elsewhere a CR stays what it is.
+void takeLoneCarriageReturnsAsLineEnds(std::string& text);
+
 }  // namespace adsd::planner

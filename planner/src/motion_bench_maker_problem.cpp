@@ -33,7 +33,7 @@ std::string resolvePath(const std::string& value, const std::string& directory) 
 
 /// The same line rules as the OMPL.app reader (problem_file.cpp): `#` starts a comment anywhere,
 /// blank lines are skipped, `[name]` sets the section, `key = value` with blanks trimmed, CR LF
-/// accepted, any other control character refused.
+/// and lone CR line ends accepted, any other control character refused.
 struct Line {
   std::string section, key, value;
   int line = 0;
@@ -42,7 +42,9 @@ struct Line {
 std::vector<Line> scanLines(const std::string& text, const std::string& source, std::vector<std::string>& warnings,
                             int& problemLine) {
   std::vector<Line> lines;
-  std::istringstream in(text);
+  std::string normalized = text;
+  takeLoneCarriageReturnsAsLineEnds(normalized);
+  std::istringstream in(normalized);
   std::string raw, section;
   int number = 0;
   while (std::getline(in, raw)) {

@@ -663,6 +663,8 @@ ProblemFile parseProblemFile(std::istream& in, const std::string& sourceName, co
   if (in.bad()) throw InputError(sourceName + ": cannot read the file");
   dropByteOrderMark(text);
   if (text.find('\0') != std::string::npos) throw InputError(sourceName + ": not a text file (contains a NUL byte)");
+  // For this pass and Boost's alike; elsewhere a CR is a control character.
+  takeLoneCarriageReturnsAsLineEnds(text);
 
   std::vector<Entry> located;
   std::vector<SectionHeader> sections;

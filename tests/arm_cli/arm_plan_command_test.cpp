@@ -12,10 +12,12 @@
 // every test is skipped with a message naming the script when they are missing.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -963,6 +965,13 @@ TEST(ArmPlanCommand, ArmCfgIsRecognized) {
   EXPECT_TRUE(isArmProblemFile(cfgOf("kr5_table_pick")));
   EXPECT_FALSE(isArmProblemFile(kArmProblems + "/no_such_problem.cfg"));
   EXPECT_FALSE(isArmProblemFile(kArmProblems + "/README.md"));
+  // In classic Mac OS text (CR alone) too: it was taken for a rigid-body problem and refused.
+  std::ifstream lf(cfgOf("kr5_table_pick"));
+  std::string text((std::istreambuf_iterator<char>(lf)), std::istreambuf_iterator<char>());
+  std::replace(text.begin(), text.end(), '\n', '\r');
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "cr.cfg") << text;
+  EXPECT_TRUE(isArmProblemFile((dir / "cr.cfg").string()));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // package_path, and the errors naming file and line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -61,6 +62,17 @@ TEST(MotionBenchMakerProblem, ResolvesPathsAndTheRobotsVariable) {
   EXPECT_EQ(p.packagePath[1], "/p/extra");
   EXPECT_EQ(p.robotLocation.line, 4);
   EXPECT_TRUE(p.warnings.empty());
+}
+
+// Classic Mac OS text (CR alone, no LF) has line ends, as a mesh file has.
+TEST(MotionBenchMakerProblem, LoneCarriageReturnsEndLines) {
+  ScopedEnv robots("ADSD_ROBOTS", "/opt/robots");
+  std::string text = kCfg;
+  std::replace(text.begin(), text.end(), '\n', '\r');
+  const MotionBenchMakerProblem p = parseMotionBenchMakerProblem(text, "/p/x.cfg", "/p");
+  EXPECT_EQ(p.robotPath, "/opt/robots/KR5/KR5 sixx R650.urdf");
+  EXPECT_EQ(p.requestPath, "/p/request.yaml");
+  EXPECT_EQ(p.robotLocation.line, 4);
 }
 
 TEST(MotionBenchMakerProblem, RobotsDefaultToTheCacheUnderHome) {

@@ -2,6 +2,7 @@
 // catalogue is an adsd::InputError whose one-line message names the file, the line and the key.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "adsd/error.h"
@@ -388,7 +389,7 @@ TEST(ProblemFileErrors, TimeLimitsBeyondTheClock) {
 // Fuzz finding (tests/fuzz/regressions/problem_file/carriage_return_in_message.cfg): the three
 // bytes ".\r." were echoed into the message, which then spanned two lines on a terminal.
 TEST(ProblemFileErrors, ControlCharactersAreNamedNotEchoed) {
-  EXPECT_EQ(errorOf(".\r."), ":1: control character 0x0d at column 2 (keys and values are text on one line)");
+  EXPECT_EQ(errorOf(".\r.\n"), ":1: control character 0x0d at column 2 (keys and values are text on one line)");
   EXPECT_EQ(errorOf(std::string(kSe3Start) + "name = a\x1b[2Jb\n"),
             ":18: control character 0x1b at column 9 (keys and values are text on one line)");
   // Windows line ends are line ends.
@@ -398,6 +399,13 @@ TEST(ProblemFileErrors, ControlCharactersAreNamedNotEchoed) {
   const ProblemFile p = readProblemFile(dir.write("crlf.cfg", crlf));
   EXPECT_EQ(p.robotPath, (dir.root() / "r.dae").string());
   EXPECT_EQ(p.goal.location.line, 11);
+  // So are old Mac line ends (CR alone) in a file that has no LF, as the mesh readers take them
+  // (text_scan.h): the whole file was one comment line, "no [problem] section".
+  std::string cr = kSe3Start;
+  std::replace(cr.begin(), cr.end(), '\n', '\r');
+  const ProblemFile q = readProblemFile(dir.write("cr.cfg", cr));
+  EXPECT_EQ(q.robotPath, (dir.root() / "r.dae").string());
+  EXPECT_EQ(q.goal.location.line, 11);
 }
 
 TEST(ProblemFileErrors, LongValuesAreShortenedInMessages) {
