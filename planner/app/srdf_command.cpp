@@ -33,7 +33,7 @@ using namespace adsd::planner;
 
 constexpr const char* kSynopsis =
     "adsd srdf ROBOT.urdf --out ROBOT.srdf [--states N] [--seed S] [--no-default] [--never]\n"
-    "                                        [--package-path DIR]...";
+    "                 [--package-path DIR]...";
 constexpr const char* kDescription =
     "Writes the self-collision pairs to leave unchecked for a robot, as an SRDF file of\n"
     "<disable_collisions> entries (MoveIt's format, which an arm problem names with `srdf = FILE`):\n"

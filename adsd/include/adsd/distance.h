@@ -150,8 +150,10 @@ class DistanceScratch {
 /// InputError for invalid options (a mode outside QueryMode, negative tolerance, non-finite
 /// threshold, non-positive cap) or a pose that is not rigid (non-finite entries, a rotation part
 /// not orthonormal within tolerance::kPoseOrthonormality, a bottom row other than 0 0 0 1) or
-/// whose translation exceeds tolerance::kMaxCoordinate. An orthonormal part of determinant -1 (a
-/// mirror image, the left part made from the right one's mesh) is an isometry too, and is taken.
+/// whose translation exceeds tolerance::kMaxCoordinate, and for a scene spanning less than
+/// tolerance::kMinSceneMagnitude, where products of its lengths underflow. An orthonormal part of
+/// determinant -1 (a mirror image, the left part made from the right one's mesh) is an isometry
+/// too, and is taken.
 DistanceResult distance(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
                         const DistanceOptions& options, DistanceScratch& scratch);
 

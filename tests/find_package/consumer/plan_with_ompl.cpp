@@ -36,7 +36,7 @@ int main() {
   scene->space = cfg.space;
   scene->robot = {ap::recentreRobot(adsd::io::loadMesh(cfg.robotPath), cfg.space)};
   scene->environment = ap::splitForRobot(adsd::io::loadMesh(cfg.worldPath), scene->robot);
-  auto space = std::make_shared<ob::SE2StateSpace>();
+  auto space = std::make_shared<ob::SE2StateSpace>();  // as cfg.space says: SE(3) takes SE3StateSpace, 3 bounds
   ob::RealVectorBounds bounds(2);
   for (int i = 0; i < 2; ++i) bounds.setLow(i, cfg.volume->min()[i]), bounds.setHigh(i, cfg.volume->max()[i]);
   space->setBounds(bounds);
