@@ -1062,6 +1062,13 @@ TEST(LoadMeshBadInput, MalformedOff) {
       << missing;
   const std::string word = loadError(dir.write("word.off", "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_NE(word.find("word.off:4: vertex 1: expected 3 coordinates"), std::string::npos) << word;
+  // A header line short of its edge count: the first vertex's x was taken for it, and the message
+  // named the vertex line alone (outside review).
+  const std::string short2 = loadError(dir.write("two_counts.off", "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(short2.find("two_counts.off:3: unexpected '0' after the three counts (vertices faces edges), read from "
+                        "line 2 on: is one missing there?"),
+            std::string::npos)
+      << short2;
   const std::string faces = loadError(dir.write("faces.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_NE(faces.find("promises 2 faces but the file ends after 1"), std::string::npos) << faces;
   const std::string none = loadError(dir.write("none.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"));
@@ -1129,7 +1136,12 @@ TEST(LoadMeshBadInput, FaceLinesTooLongToSplitNameTheLine) {
 TEST(LoadMeshBadInput, MalformedObjStlAndPlyNameTheLine) {
   TempDir dir;
   const std::string word = loadError(dir.write("word.obj", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n"));
-  EXPECT_NE(word.find("word.obj:2: vertex 2: expected 3 coordinates"), std::string::npos) << word;
+  EXPECT_NE(word.find("word.obj:2: vertex 2: coordinate 'x' is not a decimal number"), std::string::npos) << word;
+  // A C hexadecimal float is no OBJ number; it was called a missing coordinate (outside review).
+  const std::string hex = loadError(dir.write("hex.obj", "v 0x1p0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_NE(hex.find("hex.obj:1: vertex 1: coordinate '0x1p0' is not a decimal number"), std::string::npos) << hex;
+  const std::string two = loadError(dir.write("two.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_NE(two.find("two.obj:1: vertex 1: expected 3 coordinates after 'v', got 2"), std::string::npos) << two;
   const std::string range = loadError(dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 9\n"));
   EXPECT_NE(range.find("range.obj:5: face refers to vertex 9 but the file has 3 vertices"), std::string::npos) << range;
   const std::string back = loadError(dir.write("back.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n"));

@@ -79,9 +79,16 @@ class ObjReader {
   void readVertex(const std::vector<std::string_view>& tokens) {
     const std::size_t v = soup_.points.size();
     Vec3 p;
-    if (tokens.size() < 4 || !parseDouble(tokens[1], p.x()) || !parseDouble(tokens[2], p.y()) ||
-        !parseDouble(tokens[3], p.z())) {
-      throw InputError(at() + "vertex " + std::to_string(v + 1) + ": expected 3 coordinates after 'v'");
+    if (tokens.size() < 4) {
+      throw InputError(at() + "vertex " + std::to_string(v + 1) + ": expected 3 coordinates after 'v', got " +
+                       std::to_string(tokens.size() - 1));
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::string_view word = tokens[static_cast<std::size_t>(axis) + 1];
+      if (!parseDouble(word, p(axis))) {
+        throw InputError(at() + "vertex " + std::to_string(v + 1) + ": coordinate " + quoteToken(word) +
+                         " is not a decimal number");
+      }
     }
     for (int axis = 0; axis < 3; ++axis) {
       if (!std::isfinite(p(axis))) {

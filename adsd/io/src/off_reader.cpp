@@ -148,6 +148,7 @@ class OffReader {
   /// Reads the keyword (optional) and the three counts, which may span lines and carry comments.
   void readHeader(std::vector<long long>& counts) {
     bool first = true;
+    int firstCountLine = 0;
     std::string_view line;
     while (counts.size() < 3) {
       if (!lines_.next(line)) {
@@ -168,13 +169,20 @@ class OffReader {
       for (; t < tokens.size(); ++t) {
         long long count = -1;
         if (counts.size() == 3) {
+          // Counts may span lines, so a header line short of one took the first vertex's x for
+          // the edge count: name the line the counts began on.
+          std::string began;
+          if (firstCountLine != lines_.lineNumber()) {
+            began = ", read from line " + std::to_string(firstCountLine) + " on: is one missing there?";
+          }
           throw InputError(at() + "unexpected " + quoteToken(tokens[t]) +
-                           " after the three counts (vertices faces edges)");
+                           " after the three counts (vertices faces edges)" + began);
         }
         if (!parseInteger(tokens[t], count) || count < 0 || count > kMaxCount) {
           throw InputError(at() + "expected the OFF keyword or a count (vertices faces edges), got " +
                            quoteToken(tokens[t]));
         }
+        if (counts.empty()) firstCountLine = lines_.lineNumber();
         counts.push_back(count);
       }
     }

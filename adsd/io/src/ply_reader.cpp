@@ -107,7 +107,7 @@ class PlyChecker {
     for (const Element& e : elements_) {
       if (e.name == "vertex") vertexCount_ = e.count;
     }
-    if (vertexCount_ >= UINT32_MAX) throw InputError(path_ + ": more than 2^32 - 1 vertices");
+    if (vertexCount_ > UINT32_MAX) throw InputError(path_ + ": more than 2^32 - 1 vertices");
     if (format_ == Format::ascii) {
       walkAscii();
       requireNothingAfterAscii();
