@@ -996,6 +996,10 @@ TEST(LoadMeshBadInput, HeaderCountsBeyondTheFileAreTruncations) {
   binary.replace(binary.find("element vertex 3"), 16, "element vertex 4294967294");
   const std::string cut = loadError(dir.write("huge_bin.ply", binary));
   EXPECT_NE(cut.find("truncated binary PLY: vertex 4 of 4294967294"), std::string::npos) << cut;
+  // At 2^32 - 1, the largest count a header may give, it was called "more than 2^32 - 1 vertices".
+  binary.replace(binary.find("element vertex 4294967294"), 25, "element vertex 4294967295");
+  const std::string most = loadError(dir.write("most_bin.ply", binary));
+  EXPECT_NE(most.find("truncated binary PLY: vertex 4 of 4294967295"), std::string::npos) << most;
 }
 
 // Data past what the header declares: a face count too low dropped the faces beyond it without a
