@@ -208,7 +208,9 @@ def main():
             return subprocess.run([adsd] + args, stdout=stdout, stderr=subprocess.PIPE, text=True, timeout=300,
                                   cwd=work, preexec_fn=lower_limit)
         r = capped(["view", office, "--html", "capped.html"], 64 * 1024, subprocess.PIPE)
-        check(r.returncode == 2 and r.stderr == "adsd view: error: capped.html: writing the viewer page failed\n",
+        # With the system's reason: "failed" alone left the user to guess (outside review).
+        check(r.returncode == 2
+              and r.stderr == "adsd view: error: capped.html: writing the viewer page failed: File too large\n",
               f"view past a file-size limit: exit {r.returncode}, stderr {r.stderr!r}")
         check(not any(name.startswith("capped.html") for name in os.listdir(work)),
               f"view past a file-size limit left {sorted(n for n in os.listdir(work) if n.startswith('capped'))}")
