@@ -197,7 +197,7 @@ std::optional<BenchmarkArguments> parseArguments(const std::vector<std::string>&
     a.runRange = std::make_pair(static_cast<unsigned>(first), static_cast<unsigned>(end));
   }
   a.seed = given->whole("seed", 1, kMaxSeed);
-  a.seconds = given->real("time", cli::RealInterval::above(0.0).below(1e7));
+  a.seconds = given->real("time", cli::RealInterval::above(0.0).atMost(kMaxTimeLimitSeconds));
   a.outDirectory = given->text("out");
   if (a.outDirectory && a.outDirectory->empty()) throw cli::UsageError("--out: expected a directory, got ''");
   a.plots = !given->has("no-plots");

@@ -102,7 +102,7 @@ std::optional<PlanArguments> parseArguments(const std::vector<std::string>& args
     throw cli::UsageError("more than one problem file ('" + problems[0] + "', '" + problems[1] + "')");
   }
   a.planner = given->text("planner");
-  a.seconds = given->real("time", cli::RealInterval::above(0.0).below(1e7));
+  a.seconds = given->real("time", cli::RealInterval::above(0.0).atMost(kMaxTimeLimitSeconds));
   if (const auto objective = given->choice("objective", {"length", "clearance"})) {
     a.objective = *objective == "length" ? ObjectiveKind::length : ObjectiveKind::maxMinClearance;
   }

@@ -237,6 +237,14 @@ def main():
         if again.returncode in (0, 1):
             check(pathlib.Path(work, "chosen.path").read_text() == pathlib.Path(work, "again.path").read_text(),
                   f"plan --seed {seed} (as printed) planned another path")
+        # --time took less than 1e7 s where a .cfg's time_limit takes up to 1e8 (outside review):
+        # one limit, the clock's, for both.
+        longest = run(adsd, ["plan", office, "--seed", "1", "--time", "1e8"], work)
+        check(longest.returncode in (0, 1), f"plan --time 1e8: exit {longest.returncode}, {longest.stderr.strip()}")
+        expect_refused(adsd, ["plan", office, "--time", "1.5e8"], work,
+                       "adsd plan: error: --time: expected a finite number > 0 and <= 1e+08, got '1.5e8'")
+        expect_refused(adsd, ["benchmark", office, "--time", "1.5e8"], work,
+                       "adsd benchmark: error: --time: expected a finite number > 0 and <= 1e+08, got '1.5e8'")
         # The program's own help and version were printed outside that check: exit 0 into a full
         # disk, as for every command before (outside review).
         with open("/dev/full", "w") as full:

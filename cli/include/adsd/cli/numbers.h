@@ -49,6 +49,14 @@ struct RealInterval {
     return r;
   }
 
+  /// This interval with its upper end closed at \p x: "... and <= x".
+  RealInterval atMost(double x) const {
+    RealInterval r = *this;
+    r.high = x;
+    r.highIncluded = true;
+    return r;
+  }
+
   bool contains(double x) const;
   /// For messages: "> 0", ">= 0 and <= 1", "any".
   std::string describe() const;
