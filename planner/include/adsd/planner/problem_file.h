@@ -18,8 +18,9 @@
 namespace adsd::planner {
 
 /// \brief The longest time limit accepted (seconds): a problem file's [benchmark] time_limit, an
-/// arm request's allowed_planning_time, `adsd plan` and `adsd benchmark --time`. OMPL adds it to the system clock's now() in 64-bit
-/// nanoseconds, which overflow 2^63 ns (292 years) after 1970; 1e8 s (3.2 years) stays far inside.
+/// arm request's allowed_planning_time, `adsd plan` and `adsd benchmark --time`. OMPL adds it to
+/// the system clock's now() in 64-bit nanoseconds, which overflow 2^63 ns (292 years) after 1970;
+/// 1e8 s (3.2 years) stays far inside.
 inline constexpr double kMaxTimeLimitSeconds = 1e8;
 
 /// \brief Where a value came from, for messages.
