@@ -54,6 +54,33 @@ foreach(f IN LISTS exported)
   endif()
 endforeach()
 
+# A program of adsd::core alone asks for that component and needs Eigen alone: every other
+# dependency hidden from it (it needed OMPL, FCL, urdfdom and the rest, an outside review found).
+set(hidden -DCMAKE_DISABLE_FIND_PACKAGE_ompl=ON -DCMAKE_DISABLE_FIND_PACKAGE_fcl=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON -DCMAKE_DISABLE_FIND_PACKAGE_urdfdom=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_yaml-cpp=ON -DCMAKE_DISABLE_FIND_PACKAGE_Boost=ON)
+execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/../core_only" -B "${WORK_DIR}/core_only"
+                        "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release ${hidden}
+                RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "configuring the core-only consumer failed: ${rc}")
+endif()
+execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK_DIR}/core_only" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "building the core-only consumer failed: ${rc}")
+endif()
+execute_process(COMMAND "${WORK_DIR}/core_only/core_only" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the core-only consumer answered wrongly: ${rc}")
+endif()
+# An unknown component is refused by name, not with "adsd_FOUND set to FALSE" and no reason.
+execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/../core_only" -B "${WORK_DIR}/core_only_bad"
+                        "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DASK_FOR=geometry
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(NOT rc OR NOT out MATCHES "adsd has no component 'geometry' \\(this install has core")
+  message(FATAL_ERROR "asking for component 'geometry': exit ${rc}, expected its refusal by name:\n${out}")
+endif()
+
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/build"
                         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release
                         "-DWITH_PLANNER=${WITH_PLANNER}"
