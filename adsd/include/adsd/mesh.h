@@ -54,7 +54,7 @@ class Mesh {
   const std::string& name() const { return name_; }
 
   /// \brief Corner k (0..2) of triangle t, in the mesh frame.
-  const Vec3& corner(std::size_t t, int k) const { return vertices_[triangles_[t][k]]; }
+  const Vec3& corner(std::size_t t, int k) const { return vertices_[triangles_[t][static_cast<std::size_t>(k)]]; }
 
   /// \brief Axis-aligned bounds of the vertices referenced by triangles, in the mesh frame.
   Eigen::AlignedBox3d bounds() const;

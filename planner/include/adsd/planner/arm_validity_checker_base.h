@@ -51,7 +51,7 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// \brief \p dist is clearance(state); valid when within bounds and dist > safetyMargin().
   bool isValid(const ompl::base::State* state, double& dist) const final;
   /// \brief The smallest distance over the checked pairs (link–obstacle and enabled link–link).
-  /// \brief A state with a joint value that is not finite (NaN) is invalid, at clearance 0.
+  /// A state with a joint value that is not finite (NaN) is invalid, at clearance 0.
   double clearance(const ompl::base::State* state) const final;
   /// \brief A lower bound on clearance(state) that equals it when below \p cap and is at least
   /// min(clearance, cap) otherwise. Counted as a clearance query.

@@ -15,8 +15,12 @@ struct QueryCounts {
   double validitySeconds = 0.0;        ///< wall time inside validity checks, summed over threads
   double clearanceSeconds = 0.0;       ///< wall time inside clearance queries, summed over threads
 
-  double meanValiditySeconds() const { return validityChecks ? validitySeconds / validityChecks : 0.0; }
-  double meanClearanceSeconds() const { return clearanceQueries ? clearanceSeconds / clearanceQueries : 0.0; }
+  double meanValiditySeconds() const {
+    return validityChecks ? validitySeconds / static_cast<double>(validityChecks) : 0.0;
+  }
+  double meanClearanceSeconds() const {
+    return clearanceQueries ? clearanceSeconds / static_cast<double>(clearanceQueries) : 0.0;
+  }
 };
 
 /// \brief Relaxed atomic counters: each query adds to them once, from any thread; a reader sees
