@@ -54,25 +54,32 @@ foreach(f IN LISTS exported)
   endif()
 endforeach()
 
+# Configures project SOURCE into WORK_DIR/BUILD against the installed prefix (with the further
+# cache arguments given), builds it and runs its program PROGRAM, which must exit 0; WHAT names
+# the project in the messages.
+function(build_and_run what source build program)
+  execute_process(COMMAND "${CMAKE_COMMAND}" -S "${source}" -B "${WORK_DIR}/${build}"
+                          "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release ${ARGN}
+                  RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "configuring ${what} failed: ${rc}")
+  endif()
+  execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK_DIR}/${build}" RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "building ${what} failed: ${rc}")
+  endif()
+  execute_process(COMMAND "${WORK_DIR}/${build}/${program}" RESULT_VARIABLE rc)
+  if(rc)
+    message(FATAL_ERROR "${what} answered wrongly: ${rc}")
+  endif()
+endfunction()
+
 # A program of adsd::core alone asks for that component and needs Eigen alone: every other
 # dependency hidden from it (it needed OMPL, FCL, urdfdom and the rest, an outside review found).
-set(hidden -DCMAKE_DISABLE_FIND_PACKAGE_ompl=ON -DCMAKE_DISABLE_FIND_PACKAGE_fcl=ON
-    -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON -DCMAKE_DISABLE_FIND_PACKAGE_urdfdom=ON
-    -DCMAKE_DISABLE_FIND_PACKAGE_yaml-cpp=ON -DCMAKE_DISABLE_FIND_PACKAGE_Boost=ON)
-execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/../core_only" -B "${WORK_DIR}/core_only"
-                        "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release ${hidden}
-                RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "configuring the core-only consumer failed: ${rc}")
-endif()
-execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK_DIR}/core_only" RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "building the core-only consumer failed: ${rc}")
-endif()
-execute_process(COMMAND "${WORK_DIR}/core_only/core_only" RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "the core-only consumer answered wrongly: ${rc}")
-endif()
+build_and_run("the core-only consumer" "${SOURCE_DIR}/../core_only" core_only core_only
+              -DCMAKE_DISABLE_FIND_PACKAGE_ompl=ON -DCMAKE_DISABLE_FIND_PACKAGE_fcl=ON
+              -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON -DCMAKE_DISABLE_FIND_PACKAGE_urdfdom=ON
+              -DCMAKE_DISABLE_FIND_PACKAGE_yaml-cpp=ON -DCMAKE_DISABLE_FIND_PACKAGE_Boost=ON)
 # An unknown component is refused by name, not with "adsd_FOUND set to FALSE" and no reason.
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/../core_only" -B "${WORK_DIR}/core_only_bad"
                         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DASK_FOR=geometry
@@ -81,21 +88,7 @@ if(NOT rc OR NOT out MATCHES "adsd has no component 'geometry' \\(this install h
   message(FATAL_ERROR "asking for component 'geometry': exit ${rc}, expected its refusal by name:\n${out}")
 endif()
 
-execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/build"
-                        "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release
-                        "-DWITH_PLANNER=${WITH_PLANNER}"
-                RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "configuring the consumer failed: ${rc}")
-endif()
-execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK_DIR}/build" RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "building the consumer failed: ${rc}")
-endif()
-execute_process(COMMAND "${WORK_DIR}/build/consumer" RESULT_VARIABLE rc)
-if(rc)
-  message(FATAL_ERROR "the consumer answered wrongly: ${rc}")
-endif()
+build_and_run("the consumer" "${SOURCE_DIR}" build consumer "-DWITH_PLANNER=${WITH_PLANNER}")
 if(WITH_PLANNER)
   # The installed program finds its shipped problems from its own location (PREFIX/share/adsd).
   # Certified motions: a discrete path, unseeded, may step over a corner, which `adsd plan`
