@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
@@ -30,14 +29,14 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 bool isArmProblemFile(const std::string& path) {
-  // Not a regular file (/dev/zero, one line without end): readProblemFile refuses it by name.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return false;
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return false;
-  std::ostringstream whole;
-  whole << file.rdbuf();
-  std::string text = whole.str();
+  // A file it cannot read (missing, or a device such as /dev/zero, one line without end) is no arm
+  // problem: the rigid-body reader then refuses it by name.
+  std::string text;
+  try {
+    text = readInputFile(path, "problem file");  // whole, its byte-order mark dropped
+  } catch (const InputError&) {
+    return false;
+  }
   takeLoneCarriageReturnsAsLineEnds(text);
   std::istringstream in(text);
   std::string line, section;
