@@ -22,6 +22,34 @@ std::optional<std::string> Arguments::text(const std::string& name) const {
   return map_[name].as<std::string>();
 }
 
+// /dev/stdout links to /proc/self/fd/1, which links to whatever the standard output was
+// redirected to: the rename that puts an output in place replaced the link itself with a plain
+// file (as root, the machine's /dev/stdout), and the redirection got nothing (an outside review).
+bool inSystemTree(const std::string& file) {
+  namespace fs = std::filesystem;
+  auto system = [](const fs::path& p) {
+    auto part = p.begin();
+    if (part == p.end() || *part != p.root_path() || ++part == p.end()) return false;
+    if (*part == "proc" || *part == "sys") return true;
+    // /dev/shm is a plain file system (tmpfs) that programs share files in.
+    return *part == "dev" && !(++part != p.end() && *part == "shm");
+  };
+  std::error_code ec;
+  fs::path path = fs::absolute(file, ec);
+  if (ec) return false;
+  for (int hop = 0; hop < 40; ++hop) {  // the kernel's own limit on links followed
+    const fs::path directory = fs::weakly_canonical(path.parent_path(), ec);
+    if (ec) return false;
+    path = directory / path.filename();
+    if (system(path)) return true;
+    if (!fs::is_symlink(path, ec)) return false;
+    const fs::path target = fs::read_symlink(path, ec);
+    if (ec) return false;
+    path = target.is_absolute() ? target : directory / target;
+  }
+  return false;
+}
+
 std::optional<std::string> Arguments::outputFile(const std::string& name) const {
   const std::optional<std::string> file = text(name);
   if (!file) return std::nullopt;
@@ -34,6 +62,10 @@ std::optional<std::string> Arguments::outputFile(const std::string& name) const 
   const std::filesystem::file_status status = std::filesystem::status(*file, ec);
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
     throw UsageError(option + "'" + *file + "' is a device, a pipe or a socket, not a file to write");
+  }
+  // A link there that leads to a plain file (/dev/stdout redirected into one) is a stream too.
+  if (inSystemTree(*file)) {
+    throw UsageError(option + "'" + *file + "' is in /dev, /proc or /sys (a device or a stream), not a file to write");
   }
   std::filesystem::path directory = std::filesystem::path(*file).parent_path();
   if (directory.empty()) directory = ".";

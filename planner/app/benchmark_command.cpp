@@ -806,6 +806,9 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
     throw InputError(source + ": '" + directory.string() + "' is a file, not a directory to write the results in");
   }
   error.clear();
+  if (cli::inSystemTree((directory / (stem + ".log")).string())) {
+    throw InputError(source + ": '" + directory.string() + "' is in /dev, /proc or /sys, not a directory to write the results in");
+  }
   fs::create_directory(directory, error);
   if (error || !fs::is_directory(directory) || ::access(directory.c_str(), W_OK) != 0) {
     throw InputError(source + ": cannot write in directory '" + directory.string() + "'" +

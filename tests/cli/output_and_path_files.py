@@ -14,7 +14,8 @@ state's numbers are taken; a state outside the problem's bounds is refused namin
 no page is written; a byte-order mark before the first state is skipped. A start in collision is
 refused by `adsd plan` and shown, with a warning naming its line, by `adsd view`. `adsd benchmark
 --out` does not make a missing parent directory, and says so of a file. Outputs over the meshes a
-problem file names, and inputs without end (/dev/zero), are refused.
+problem file names, and inputs without end (/dev/zero), are refused, and so are outputs in /dev,
+/proc or /sys that lead to a plain file (/dev/stdout redirected into one).
 `adsd plan`'s least clearance along the path, between its states too, finds where a discrete path
 steps over the thin wall. Past a file-size limit (ulimit -f), a page, a report and the standard
 output are failures said in one line (exit status 2 or 1), not a silent kill leaving a .partial.
@@ -66,6 +67,25 @@ def main():
             # A device would be replaced by a plain file (the write goes through a rename).
             expect_refused(adsd, [command, office, option, "/dev/null"] + extra, work,
                            f"adsd {command}: error: {option}: '/dev/null' is a device, a pipe or a socket")
+
+        # A name in /dev or /proc that leads to a plain file (/dev/stdout, the standard output
+        # redirected into one) stands for a stream: the rename replaced the link itself with a
+        # file, as root the machine's /dev/stdout. Tried through a link of our own to
+        # /proc/self/fd/1, so that a failure harms no file of the system.
+        stream = os.path.join(work, "stdout.path")
+        os.symlink("/proc/self/fd/1", stream)
+        redirected = os.path.join(work, "redirected.txt")
+        for command, option in (("plan", "--path"), ("plan", "--html"), ("view", "--html")):
+            with open(redirected, "w") as out:
+                r = subprocess.run([adsd, command, office, option, stream], stdout=out,
+                                   stderr=subprocess.PIPE, text=True, timeout=300, cwd=work)
+            check(r.returncode == 2 and r.stderr.startswith(
+                f"adsd {command}: error: {option}: '{stream}' is in /dev, /proc or /sys (a device or a stream)"),
+                f"{command} {option} through a link to /proc/self/fd/1: exit {r.returncode}, {r.stderr!r}")
+            check(os.path.islink(stream), f"{command} {option}: the link to /proc/self/fd/1 was replaced by a file")
+        r = run(adsd, ["benchmark", office, "--runs", "1", "--time", "0.1", "--out", "/proc/self"], work)
+        check(r.returncode == 2 and "--out: '/proc/self' is in /dev, /proc or /sys" in r.stderr,
+              f"benchmark --out /proc/self: exit {r.returncode}, {r.stderr!r}")
 
         # An output that is an input, or the other output, is refused: `view p.cfg --html p.cfg`
         # replaced the problem file with a page.

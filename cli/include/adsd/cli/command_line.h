@@ -85,6 +85,11 @@ class Arguments {
 void requireDistinctFile(const std::string& option, const std::string& output,
                          const std::vector<std::pair<std::string, std::string>>& others);
 
+/// \brief Whether \p file, through any symbolic links of its directories and of itself, lies in
+/// /dev, /proc or /sys: a name such as /dev/stdout stands for a stream, and an output renamed
+/// into place there would replace the system's link with a plain file.
+bool inSystemTree(const std::string& file);
+
 /// \brief A program's (or subcommand's) options, its help, and the parsing of its arguments.
 class CommandLine {
  public:
