@@ -76,6 +76,7 @@ ArmValidityCheckerBase::ArmValidityCheckerBase(const ompl::base::SpaceInformatio
     ballCentres_.push_back(centre);
     ballRadii_.push_back(radius);
     linkBoxes_.push_back(mesh.bounds());
+    linkComponentPoints_.push_back(vertexPerComponent(mesh));
   }
   selfPairIndex_.assign(linkOfBody_.size() * linkOfBody_.size(), SIZE_MAX);
   for (const auto& [a, b] : scene_->selfPairs.enabledPairs()) {
@@ -151,6 +152,9 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
   const Pose identity = Pose::Identity();
   for (std::size_t b = 0; b < linkOfBody_.size(); ++b) {
     const Pose& pose = linkPoses[linkOfBody_[b]];
+    if (const ConvexSolid* solid = solidHolding(b, pose)) {
+      note("link " + linkName(b) + " inside obstacle '" + solid->name + "'");
+    }
     for (std::size_t e = 0; e < scene_->environment.size(); ++e) {
       const std::size_t body = linkOfBody_.size() + e;
       if (!pairSeparatedAbove(b, pose, body, identity, safetyMargin_)) {
@@ -169,6 +173,26 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
     found.push_back("and " + std::to_string(more) + (more == 1 ? " more pair" : " more pairs"));
   }
   return found;
+}
+
+const ConvexSolid* ArmValidityCheckerBase::solidHolding(std::size_t body, const Pose& pose) const {
+  // A point on a solid's surface is left to the distance queries, which find it in contact.
+  const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_;
+  for (const Vec3& local : linkComponentPoints_[body]) {
+    const Vec3 point = pose * local;
+    for (const ConvexSolid& solid : scene_->solids) {
+      if (solid.containsStrictly(point, slack)) return &solid;
+    }
+  }
+  return nullptr;
+}
+
+bool ArmValidityCheckerBase::anyLinkInsideSolid(const std::vector<Pose>& linkPoses) const {
+  if (scene_->solids.empty()) return false;
+  for (std::size_t b = 0; b < linkOfBody_.size(); ++b) {
+    if (solidHolding(b, linkPoses[linkOfBody_[b]]) != nullptr) return true;
+  }
+  return false;
 }
 
 const std::vector<Pose>* ArmValidityCheckerBase::posesFor(const ompl::base::State* state) const {
@@ -260,6 +284,7 @@ bool ArmValidityCheckerBase::separatedAbove(const std::vector<Pose>& linkPoses, 
 double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, double cap,
                                             bool obstaclesOnly) const {
   if (!(cap > 0.0)) return 0.0;  // nothing asked for; 0 is a lower bound of every distance
+  if (anyLinkInsideSolid(linkPoses)) return 0.0;
   thread_local std::vector<PairBound> pairs;
   const double slack = broadPhase(linkPoses, cap, pairs);
   const std::size_t n = linkOfBody_.size();
@@ -290,6 +315,13 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
   const std::vector<Pose>* poses = posesFor(state);
   if (poses == nullptr) return 0.0;
   const std::vector<Pose>& linkPoses = *poses;
+  // A link inside a solid is at distance 0 from it, weighted as the link's pairs with obstacles.
+  double inside = cap;
+  for (std::size_t b = 0; b < linkOfBody_.size() && !scene_->solids.empty(); ++b) {
+    const double w = linkWeights[linkOfBody_[b]];
+    if (w > 0.0 && solidHolding(b, linkPoses[linkOfBody_[b]]) != nullptr) inside = std::min(inside, -subtract / w);
+  }
+  if (inside < cap) return inside;
   thread_local std::vector<PairBound> pairs;
   // Every pair: each has its own weight, so no one distance limit culls them here.
   const double slack = broadPhase(linkPoses, std::numeric_limits<double>::infinity(), pairs);
@@ -330,7 +362,8 @@ bool ArmValidityCheckerBase::isValid(const ompl::base::State* state) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::validity);
   if (!si_->satisfiesBounds(state)) return false;
   const std::vector<Pose>* poses = posesFor(state);
-  return poses != nullptr && separatedAbove(*poses, safetyMargin_);
+  // The solids last: most states in collision fail a pair first, and the test is for free ones.
+  return poses != nullptr && separatedAbove(*poses, safetyMargin_) && !anyLinkInsideSolid(*poses);
 }
 
 bool ArmValidityCheckerBase::isValid(const ompl::base::State* state, double& dist) const {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -105,6 +106,47 @@ TEST(ArmValidityChecker, PairsInContactNameTheLinkAndTheObstacle) {
   const double away[2] = {0.0, 3.14159265358979};
   si->getStateSpace()->as<ArmStateSpace>()->fromJoints(away, s.get());
   EXPECT_TRUE(checker->pairsInContact(s.get()).empty());
+}
+
+// A closed convex obstacle (a primitive) is a solid, as in MoveIt, whose FCL primitives are: the
+// small arm wholly inside a box is in collision, though no surfaces meet (surface distance about
+// 4.5). The same box less one triangle is a surface only, and the arm inside it free.
+TEST(ArmValidityChecker, ALinkInsideAClosedConvexObstacleIsInCollision) {
+  auto model = std::make_shared<const ArmModel>(readUrdf(test::armTestData("slider_arm.urdf")));
+  const Mesh shell = test::placedBox(Vec3(10.0, 10.0, 10.0), Vec3::Zero(), Pose::Identity(), "shell");
+  std::vector<TriangleIndices> opened = shell.triangles();
+  opened.pop_back();
+  const ArmScene inside = makeArmScene(model, {shell});
+  const ArmScene insideOpen = makeArmScene(model, {Mesh(shell.vertices(), opened, "open shell")});
+  ASSERT_EQ(inside.solids.size(), 1u);
+  EXPECT_TRUE(insideOpen.solids.empty());
+  auto si = spaceFor(*model);
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  const double q[2] = {0.0, 0.0};
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
+  auto checkSolid = [&](const ArmValidityCheckerBase& checker, const std::string& which) {
+    SCOPED_TRACE(which);
+    EXPECT_FALSE(checker.isValid(s.get()));
+    double dist = 1.0;
+    EXPECT_FALSE(checker.isValid(s.get(), dist));
+    EXPECT_EQ(dist, 0.0);
+    EXPECT_EQ(checker.clearance(s.get()), 0.0);
+    EXPECT_EQ(checker.clearanceUpTo(s.get(), 0.5), 0.0);
+    EXPECT_EQ(checker.obstacleClearanceUpTo(s.get(), 0.5), 0.0);
+    const std::vector<double> linkWeights(model->links.size(), 2.0);
+    const std::vector<double> pairWeights(inside.selfPairs.enabledPairs().size(), 1.0);
+    EXPECT_LE(checker.weightedClearanceUpTo(s.get(), linkWeights.data(), pairWeights.data(), 0.0, 1.0), 0.0);
+    const std::vector<std::string> contacts = checker.pairsInContact(s.get(), 10);
+    EXPECT_NE(std::find(contacts.begin(), contacts.end(), "link 'tip' inside obstacle 'shell'"), contacts.end());
+  };
+  checkSolid(ArmValidityChecker(si, inside), "ours");
+#if ADSD_PLANNER_HAS_FCL
+  checkSolid(FclArmValidityChecker(si, inside), "FCL's");
+#endif
+  const ArmValidityChecker open(si, insideOpen);
+  EXPECT_TRUE(open.isValid(s.get()));
+  EXPECT_GT(open.obstacleClearanceUpTo(s.get(), std::numeric_limits<double>::infinity()), 4.0);
+  EXPECT_TRUE(open.pairsInContact(s.get()).empty());
 }
 
 /// States to compare with the brute force: \p regular, or \p sanitized in sanitizer builds, where

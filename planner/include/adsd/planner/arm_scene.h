@@ -10,6 +10,7 @@
 #include "adsd/mesh.h"
 #include "adsd/planner/arm_collision_pairs.h"
 #include "adsd/planner/arm_model.h"
+#include "adsd/planner/convex_solids.h"
 
 namespace adsd::planner {
 
@@ -24,11 +25,15 @@ struct ArmScene {
   std::vector<Mesh> environment;
   /// What reading the SRDF warned of (disablePairsFromSrdf), one line each.
   std::vector<std::string> warnings;
+  /// The obstacles' closed convex components (every primitive's mesh among them) as solids: a
+  /// link inside one is in collision (convex_solids.h). Filled by makeArmScene.
+  std::vector<ConvexSolid> solids;
 };
 
 /// \brief An ArmScene with adjacency-disabled self pairs (and an SRDF's, when \p srdfPath is not
 /// empty); the environment's meshes are split into parts for the broad phase (splitIntoParts,
-/// pieces about the size of the arm's largest link).
+/// pieces about the size of the arm's largest link), and their closed convex components kept
+/// whole as solids.
 ArmScene makeArmScene(std::shared_ptr<const ArmModel> model, const std::vector<Mesh>& environment,
                       const std::string& srdfPath = "");
 

@@ -24,8 +24,10 @@ namespace adsd::planner {
 /// \brief A state validity checker for an arm: every checked link against every obstacle, and the
 /// enabled link pairs against each other.
 ///
-/// A state is valid when it lies within the space's bounds and every such distance is above the
-/// safety margin (default 0: touching is a collision). The space must be an ArmStateSpace of the
+/// A state is valid when it lies within the space's bounds, every such distance is above the
+/// safety margin (default 0: touching is a collision), and no link lies inside one of the scene's
+/// solids (ArmScene::solids: a primitive, a closed convex object), where its distance and the
+/// clearance are 0. The space must be an ArmStateSpace of the
 /// scene's model. All const methods are thread-safe and take no lock: the joint vector, the link
 /// poses and the pair list live in thread_local scratch, and the counters are atomic.
 ///
@@ -119,6 +121,11 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// into the planner: such a state is invalid, at clearance 0 (a NaN continuous joint already
   /// failed SO(2)'s bounds test).
   const std::vector<Pose>* posesFor(const ompl::base::State* state) const;
+  /// The scene's solid that holds link body \p body at \p pose (a vertex of each of its
+  /// components strictly inside), or null: ArmScene::solids.
+  const ConvexSolid* solidHolding(std::size_t body, const Pose& pose) const;
+  /// Whether some link lies inside a solid at these poses.
+  bool anyLinkInsideSolid(const std::vector<Pose>& linkPoses) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
   /// The smallest distance over the checked pairs (the link pairs left out when \p obstaclesOnly).
@@ -131,6 +138,7 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   std::vector<Vec3> ballCentres_;  ///< link frame, per link body
   std::vector<double> ballRadii_;
   std::vector<Eigen::AlignedBox3d> linkBoxes_;  ///< link frame, per link body
+  std::vector<std::vector<Vec3>> linkComponentPoints_;  ///< link frame, per link body: vertexPerComponent
   std::vector<std::pair<std::size_t, std::size_t>> selfPairs_;  ///< link bodies, enabled pairs
   std::vector<std::size_t> selfPairIndex_;  ///< link bodies a x b -> index into selfPairs_
   std::vector<Vec3> obstacleCentres_, obstacleHalves_;  ///< world frame, per obstacle part
