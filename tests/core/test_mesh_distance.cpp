@@ -680,7 +680,8 @@ TEST(MeshDistance, SeparatedPairTheGridCannotCullIsSplitAndStaysExact) {
 }
 
 }  // namespace
-// Meshes posed 1e15 and 1e20 times their size apart: the roundoff allowance of the numbers the
+// Meshes posed 1e15 and 1e20 times their size apart (on an axis and a plane, and on the diagonal
+// with both poses far out): the roundoff allowance of the numbers the
 // query works with (64 eps M, distance.h) is larger than the meshes, so any triangle pair is the
 // answer within the promised accuracy, and the query stops at the first. It went through every
 // pair instead, none of them provably farther than another (the CGAL cow and bunny 1e15 apart:
@@ -691,16 +692,22 @@ TEST(MeshDistance, MeshesFarApartForTheirSizeAreAnsweredAtOnce) {
   Mesh ringWithTree = ring, ballWithTree = ball;
   ringWithTree.buildHierarchy();
   ballWithTree.buildHierarchy();
-  for (const double apart : {1e15, 1e20}) {
-    const Pose poseA = Eigen::Translation3d(Vec3(0.3, -0.2, 1.0)) * Eigen::AngleAxisd(0.2, Vec3(1, 0, 0));
-    const Pose poseB = Eigen::Translation3d(Vec3(apart, 0.5 * apart, 0.0)) * Eigen::AngleAxisd(1.0, Vec3(0, 1, 0));
+  for (const double apart : {1e15, 1e20, -1e15, -1e20}) {
+    // Negative: both poses far out, on opposite ends of the diagonal, where B's vertices in A's
+    // frame round to a lattice of ulp(2e20) in every coordinate (all pairs measured, an outside
+    // review), where on one axis they kept their shape across the other two.
+    const Vec3 offsetA = apart > 0 ? Vec3(0.3, -0.2, 1.0) : Vec3::Constant(-apart);
+    const Vec3 offsetB = apart > 0 ? Vec3(apart, 0.5 * apart, 0.0) : Vec3::Constant(apart);
+    const Pose poseA = Eigen::Translation3d(offsetA) * Eigen::AngleAxisd(0.2, Vec3(1, 0, 0));
+    const Pose poseB = Eigen::Translation3d(offsetB) * Eigen::AngleAxisd(1.0, Vec3(0, 1, 0));
     const oracle::MeshPairDistance truth = oracle::meshDistance(ring, poseA, ball, poseB);
     const double accuracy = kPromisedAccuracy * oracle::sceneDiagonal(ring, poseA, ball, poseB);
     // Without the stop, every one of these pairs was measured.
     ASSERT_GT(ring.triangleCount() * ball.triangleCount(), 10000u);
     for (const bool trees : {false, true}) {
       SCOPED_TRACE(std::string(trees ? "trees, " : "from scratch, ") + std::to_string(apart));
-      for (const DistanceOptions& options : {DistanceOptions::exactDistance(), DistanceOptions::cappedAt(2 * apart)}) {
+      for (const DistanceOptions& options :
+           {DistanceOptions::exactDistance(), DistanceOptions::cappedAt(4 * std::abs(apart))}) {
         const DistanceResult r = trees ? distance(ringWithTree, poseA, ballWithTree, poseB, options)
                                        : distance(ring, poseA, ball, poseB, options);
         EXPECT_NEAR(r.distance, truth.value, accuracy);
