@@ -390,6 +390,17 @@ void resolveMimicJoints(const urdf::ModelInterface& urdf, const std::string& urd
       leader = follower->mimic->joint_name;
     }
     const ArmJoint& lead = model.joints[byName.at(leader)];
+    // Each link's numbers are within 1e75, but a chain multiplies them: six joints each following
+    // the last by 1e75 overflowed to a pose with no finite entry, refused by the distance query
+    // with no word of the file or the joint (an outside review).
+    const double leaderReach = lead.locked ? std::fabs(lead.lockedPosition)
+                                           : std::max(std::fabs(lead.lower), std::fabs(lead.upper));
+    if (!inRange(multiplier) || !inRange(offset) || !inRange(std::fabs(multiplier) * leaderReach + std::fabs(offset))) {
+      std::ostringstream got;
+      got << multiplier << " and offset " << offset;
+      throw InputError(where + ": its <mimic> chain to joint '" + lead.name + "' composes to multiplier " + got.str() +
+                       ", which move it beyond 1e75");
+    }
     // A continuous leader's angle wraps from pi to -pi: a follower at a multiple of it would jump
     // there, unless it turns and the multiple is whole (a whole number of turns is no turn).
     const bool wholeTurns = joint.type != ArmJointType::prismatic && multiplier == std::round(multiplier);

@@ -410,6 +410,12 @@ TEST(ArmModel, MimicJointsThatCannotFollowAreRefusedNamingTheJoint) {
       {"huge_multiplier.urdf", robot(palm + joint("j1", "revolute", "b", "") +
                                      joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"1e300\"/>")),
        "multiplier and offset must be finite"},
+      // Each within 1e75, but composed 1e150: the poses overflowed (an outside review).
+      {"chained_multipliers.urdf",
+       robot(palm + "<link name=\"d\"/>" + joint("j1", "revolute", "b", "") +
+             joint("j2", "revolute", "c", "<mimic joint=\"j1\" multiplier=\"1e75\"/>") +
+             joint("j3", "revolute", "d", "<mimic joint=\"j2\" multiplier=\"1e75\"/>")),
+       "joint 'j3': its <mimic> chain to joint 'j1' composes to multiplier 1e+150 and offset 0"},
   });
   // A whole multiple of a continuous joint's angle turns by whole turns where it wraps: accepted.
   EXPECT_NO_THROW(readUrdf(dir.write("whole.urdf", robot(palm + joint("j1", "continuous", "b", "") +
