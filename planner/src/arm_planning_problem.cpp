@@ -212,6 +212,19 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
     if (std::find(planned.begin(), planned.end(), name) != planned.end()) ++plannedCoordinates;
   }
   if (plannedCoordinates > 0 && plannedCoordinates < dof) {
+    // A held joint stands where the start state puts it, limits or not: they bound the planned
+    // joints (checkLimits, below). One outside them was taken in silence (an outside review).
+    for (std::size_t i = 0; i < dof; ++i) {
+      const ArmJoint& joint = model->joints[model->activeJoints[i]];
+      if (std::find(planned.begin(), planned.end(), joint.name) != planned.end()) continue;
+      if (joint.type == ArmJointType::continuous || (joint.lower <= start_[i] && start_[i] <= joint.upper)) continue;
+      const auto line = request.startLines.find(joint.name);
+      std::ostringstream why;
+      why << (line != request.startLines.end() ? at(file.requestPath, line->second) : file.scenePath) << ": joint '"
+          << joint.name << "', held outside planning group '" << request.groupName << "', stands at " << start_[i]
+          << ", outside its limits [" << joint.lower << ", " << joint.upper << "]: held there as given";
+      warnings_.push_back(why.str());
+    }
     std::map<std::string, double> startOf;
     for (std::size_t i = 0; i < dof; ++i) startOf[model->joints[model->activeJoints[i]].name] = start_[i];
     holdJointsOutside(*model, planned, start_);

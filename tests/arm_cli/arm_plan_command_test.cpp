@@ -833,6 +833,16 @@ TEST(ArmPlanningProblem, OnlyTheRequestsGroupIsPlannedTheOtherJointsHeld) {
   std::string header;
   std::getline(path, header);
   EXPECT_EQ(header, "# joints: swing");
+  // A held joint outside its limits stands there as given, said at its line: it was taken in
+  // silence, where a planned one is refused (outside review).
+  writeRequest(dir, "yaw, swing", "2.5, 0", {{"swing", "0.8"}});
+  {
+    const ArmPlanningProblem p(readMotionBenchMakerProblem(cfg), CheckingOptions{});
+    ASSERT_EQ(p.warnings().size(), 1u);
+    EXPECT_EQ(p.warnings()[0], (dir / "request.yaml").string() +
+                                   ":5: joint 'yaw', held outside planning group 'arm', stands at 2.5, outside its "
+                                   "limits [-2, 2]: held there as given");
+  }
 }
 
 // A mimic joint whose leader is held outside the planning group stands where the held leader puts
