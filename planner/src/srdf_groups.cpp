@@ -13,13 +13,20 @@ namespace adsd::planner {
 
 namespace {
 
-/// The <group> element named \p name under \p robot, or null.
-const TiXmlElement* findGroup(const TiXmlElement* robot, const std::string& name) {
+/// The <group> element named \p name under \p robot, or null; two of that name are an error at
+/// the second's line of \p srdfPath (the first was taken in silence: an outside review).
+const TiXmlElement* findGroup(const std::string& srdfPath, const TiXmlElement* robot, const std::string& name) {
+  const TiXmlElement* found = nullptr;
   for (const TiXmlElement* g = robot->FirstChildElement("group"); g; g = g->NextSiblingElement("group")) {
     const char* n = g->Attribute("name");
-    if (n != nullptr && name == n) return g;
+    if (n == nullptr || name != n) continue;
+    if (found != nullptr) {
+      throw InputError(srdfPath + ":" + std::to_string(g->Row()) + ": group '" + name + "' is defined again (first at line " +
+                       std::to_string(found->Row()) + ")");
+    }
+    found = g;
   }
-  return nullptr;
+  return found;
 }
 
 /// Collects into \p joints (indices into model.joints) what group element \p group names;
@@ -66,7 +73,7 @@ void collectGroup(const ArmModel& model, const std::string& srdfPath, const TiXm
       }
     } else if (kind == "group") {
       const std::string name = attribute(e, "name");
-      const TiXmlElement* sub = findGroup(robot, name);
+      const TiXmlElement* sub = findGroup(srdfPath, robot, name);
       if (sub == nullptr) throw InputError(where(e) + "group names group '" + name + "', which the file lacks");
       if (!open.insert(name).second) throw InputError(where(e) + "groups include each other (group '" + name + "')");
       collectGroup(model, srdfPath, robot, sub, open, joints);
@@ -84,7 +91,7 @@ std::optional<std::vector<std::string>> srdfGroupJoints(const ArmModel& model, c
   xml::parseXml(srdfPath, text, doc);
   const TiXmlElement* robot = doc.FirstChildElement("robot");
   if (!robot) throw InputError(srdfPath + ": no <robot> element: not an SRDF file");
-  const TiXmlElement* element = findGroup(robot, group);
+  const TiXmlElement* element = findGroup(srdfPath, robot, group);
   if (element == nullptr) return std::nullopt;
   std::set<std::string> open = {group};
   std::set<std::size_t> joints;

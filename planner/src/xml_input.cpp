@@ -71,6 +71,15 @@ void parseXml(const std::string& path, const std::string& text, TiXmlDocument& d
     const std::string line = doc.ErrorRow() > 0 ? ":" + std::to_string(doc.ErrorRow()) : "";
     throw InputError(path + line + ": not XML: " + doc.ErrorDesc());
   }
+  // A document has one root element; TinyXML reads on past it, and the readers, which take the
+  // first, dropped a second <robot> in silence (an outside review).
+  const TiXmlElement* root = doc.FirstChildElement();
+  if (root != nullptr && root->NextSiblingElement() != nullptr) {
+    const TiXmlElement* second = root->NextSiblingElement();
+    throw InputError(path + ":" + std::to_string(second->Row()) + ": not XML: a second root element <" +
+                     second->ValueStr() + "> after <" + root->ValueStr() + "> (line " + std::to_string(root->Row()) +
+                     ")");
+  }
 }
 
 }  // namespace adsd::planner::xml

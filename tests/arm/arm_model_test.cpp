@@ -323,6 +323,9 @@ TEST(ArmModel, BadUrdfsGiveOneInputErrorNamingTheFile) {
                            joint("j2", "revolute", "b", "c") + joint("j3", "revolute", "c", "b")), "cycle"},
       {"loop.urdf", robot(link + "<link name=\"b\"/>" + joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "b", "a")), "cycle"},
       {"two_roots.urdf", robot(link + "<link name=\"b\"/>"), "root links"},
+      // A second <robot> after the first was dropped in silence (outside review).
+      {"two_robots.urdf", robot(link) + "\n<robot name=\"s\">" + link + "</robot>",
+       "two_robots.urdf:2: not XML: a second root element <robot> after <robot> (line 1)"},
       {"no_links.urdf", "<robot name=\"r\"/>", "no <link> elements"},
       {"two_links_a.urdf", robot(link + link), "two links are named 'a'"},
       {"undefined_link.urdf", robot(link + joint("j", "revolute", "a", "zz")), "'zz'"},

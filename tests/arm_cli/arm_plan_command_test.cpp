@@ -824,6 +824,10 @@ TEST(ArmPlanningProblem, OnlyTheRequestsGroupIsPlannedTheOtherJointsHeld) {
                                         ":2: group 'arm' names no movable joint of robot 'two'")
         << group;
   }
+  // Two groups of one name: the first was taken in silence (outside review).
+  std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><joint name='swing'/></group>\n"
+                                     "<group name='arm'><joint name='yaw'/></group>\n</robot>\n";
+  EXPECT_EQ(armProblemError(cfg), (dir / "two.srdf").string() + ":3: group 'arm' is defined again (first at line 2)");
   // Planned, the path file names the group's joint only.
   std::ofstream(dir / "two.srdf") << "<robot name='two'>\n<group name='arm'><joint name='swing'/></group>\n</robot>\n";
   writeRequest(dir, "yaw, swing", "0.3, 0", {{"swing", "0.8"}});
