@@ -119,6 +119,17 @@ Document::Document(const std::string& text, std::string source)
   YAML::Parser parser(events);
   RepeatedKeyFinder finder(source_);
   parser.HandleNextDocument(finder);
+  // One document per file: the readers take the first, and a second was dropped in silence (an
+  // outside review). An empty one after a `---` is no second: `rostopic echo` ends each message so.
+  RepeatedKeyFinder rest(source_);
+  if (parser.HandleNextDocument(rest)) {
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    for (std::size_t d = 1; d < documents.size(); ++d) {
+      if (documents[d].IsNull()) continue;
+      throw InputError(source_ + ":" + std::to_string(documents[d].Mark().line + 1) +
+                       ": a second YAML document (after '---'): the file holds one");
+    }
+  }
 }
 
 Field Document::root() const {

@@ -176,6 +176,10 @@ TEST(PlanningSceneYamlErrors, BrokenYamlNamesTheLine) {
   EXPECT_ERROR(withLine(16, "          dimensions: [0.4, 0.2, 0.1"), ":17:", "not valid YAML");
   EXPECT_ERROR("a:\n  - b\n  c: d\n", ":3:", "not valid YAML");
   EXPECT_ERROR("", ":1:", "expected a map");
+  // A second document was dropped in silence (outside review); an empty one after `---`, as
+  // `rostopic echo` ends each message, is none.
+  EXPECT_ERROR("name: a\n---\nname: b\n", ":3:", "a second YAML document (after '---'): the file holds one");
+  EXPECT_NO_THROW(parsePlanningSceneYaml(std::string(kScene) + "---\n", "s.yaml"));
 }
 
 TEST(PlanningSceneYamlErrors, MissingFieldAndWrongType) {
