@@ -6,6 +6,7 @@
 // (arm_viewer_html.h) takes an arm's path file: a "# joints: ..." header and one line of joint
 // values per state. Exit status: 0 written, 2 bad input.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -227,9 +228,16 @@ ompl::geometric::PathGeometric readArmPathFile(const std::string& file, const Ar
   std::string names;
   for (const std::size_t j : model.activeJoints) names += (names.empty() ? "" : " ") + model.joints[j].name;
   const auto onComment = [&](const std::string& comment, const std::string& where) {
-    static const std::string kHeader = " joints:";
-    if (comment.compare(0, kHeader.size(), kHeader) != 0) return;
-    std::istringstream words(comment.substr(kHeader.size()));
+    // "# joints:" as `adsd plan` writes it, and as hands write it ("#joints:", "# Joints :"): a
+    // header taken for a comment gave the values in the robot's order whatever it named.
+    const std::size_t start = comment.find_first_not_of(" \t");
+    const std::size_t colon = comment.find(':');
+    if (start == std::string::npos || colon == std::string::npos || colon < start) return;
+    std::string key = comment.substr(start, colon - start);
+    key.erase(key.find_last_not_of(" \t") + 1);
+    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (key != "joints") return;
+    std::istringstream words(comment.substr(colon + 1));
     std::string given, word;
     while (words >> word) given += (given.empty() ? "" : " ") + word;
     if (given != names) {

@@ -412,6 +412,11 @@ TEST(ArmViewCommand, PathOfAnotherRobotNamesItsHeader) {
   SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
   expectPathRefused("# joints: /j1 /j2 /j3 /j4 /j5 /j6 /j7\n0 0 0 0 0 0 0\n", ":1",
                     "the path's joints (/j1 /j2 /j3 /j4 /j5 /j6 /j7) are not those of robot '");
+  // Written by hand: read as the header all the same, where it was taken for a comment and the
+  // values given in the robot's order (outside review).
+  for (const char* header : {"#joints: j2 j1\n", "# Joints : j2 j1\n", "#\tJOINTS:j2 j1\n"}) {
+    expectPathRefused(std::string(header) + "0 0 0 0 0 0\n", ":1", "the path's joints (j2 j1) are not those of robot '");
+  }
 }
 
 TEST(ArmViewCommand, PathWithoutStatesOrFileIsNamed) {
