@@ -111,6 +111,11 @@ def group_runs(runs):
     return sorted(ordered, key=lambda g: tuple(order[(f, getattr(g, f))] for f in ("problem", "label", "motion", "checker")))
 
 
+def cell(text):
+    """Text for a Markdown table cell: a planner named 'a | b' split its row into two cells."""
+    return text.replace("|", "\\|")
+
+
 def median(values):
     return statistics.median(values) if values else None
 
@@ -144,7 +149,7 @@ def summary(groups):
             validity = g.pooled_mean("validity_check_time", "validity_checks")
             clearance = g.pooled_mean("clearance_query_time", "clearance_queries")
             lines.append("| %s | %s | %s | %d | %d (%.0f %%) | %s | %s | %s | %s | %s | %s | %s |" % (
-                g.label, g.checker or "–", g.motion or "–", len(g.runs), g.solved(),
+                cell(g.label), g.checker or "–", g.motion or "–", len(g.runs), g.solved(),
                 100.0 * g.solved() / len(g.runs), fmt(median(g.values("time"))),
                 fmt(median(g.values(g.clearance_column(), solved_only=True))),
                 count(median(g.values("validity_checks"))),
@@ -159,7 +164,7 @@ def summary(groups):
                 def ratio(a, b):
                     return a / b if a is not None and b not in (None, 0) else None
                 ratios.append("| %s | %s | %s | %s | %s |" % (
-                    ours.label, ours.motion,
+                    cell(ours.label), ours.motion,
                     fmt(ratio(median(theirs.values("time")), median(ours.values("time")))),
                     fmt(ratio(theirs.pooled_mean("validity_check_time", "validity_checks"),
                               ours.pooled_mean("validity_check_time", "validity_checks"))),

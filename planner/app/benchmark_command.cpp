@@ -733,9 +733,24 @@ std::vector<std::unique_ptr<Combination>> buildCombinations(const BenchmarkArgum
       }
       c->benchmark = std::make_unique<ot::Benchmark>(c->problem->setup(), input.name);
       Combination* self = c.get();
+      // Instances under one name (the format repeats a planner's line for each, with other
+      // parameters) are told apart by a number: under one name, the summary and the plots merged
+      // their runs into one row (an outside review).
+      std::map<std::string, int> instances;
       for (const PlannerEntry& entry : input.planners) {
         ob::PlannerPtr planner = makeConfiguredPlanner(entry, c->problem->setup(), first);
-        const std::string label = (entry.label != entry.name ? entry.label : planner->getName()) + " [" + c->label() + "]";
+        std::string name = entry.label != entry.name ? entry.label : planner->getName();
+        if (const int k = ++instances[name]; k > 1) {
+          const std::string numbered = name + " #" + std::to_string(k);
+          if (first) {
+            const std::string where = entry.location.file.empty() ? "--planner" : entry.location.describe();
+            std::cerr << "adsd benchmark: warning: " << where
+                      << ": another instance named '" << name << "': its results are named '" << numbered
+                      << "' (`" << entry.name << ".name = ...` names it)\n";
+          }
+          name = numbered;
+        }
+        const std::string label = name + " [" + c->label() + "]";
         c->benchmark->addPlanner(
             std::make_shared<MeasuredPlanner>(planner, label, [self](double seconds) { captureQueries(*self, seconds); }));
       }

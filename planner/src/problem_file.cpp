@@ -617,6 +617,8 @@ void readPlannerSection(const std::vector<Entry>& entries, const std::string& so
     }
     const std::string parameter = key.substr(dot + 1);
     if (parameter == "name") {
+      // An empty name made a row with no planner in the summary (an outside review).
+      if (e.value.empty()) throw InputError(locate(source, e).describe() + ": a planner's name may not be empty");
       latest->label = e.value;
     } else {
       if (const std::optional<ValueRule> rule = plannerParameterRule(parameter)) checkValue(e, *rule, source);

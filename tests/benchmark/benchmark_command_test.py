@@ -71,6 +71,20 @@ def expect_bad_input(adsd, args, needle, out_dir, status=2, env=None):
     check(not os.path.exists(out_dir), "%s: created %s on bad input" % (shown, out_dir))
 
 
+def thin_wall_cfg(work, problems, name, planners):
+    """A thin-wall problem file named NAME.cfg in WORK, with the [planner] lines PLANNERS (its
+    first on line 16)."""
+    path = os.path.join(work, name + ".cfg")
+    with open(path, "w") as f:
+        f.write("[problem]\nname = %s\n" % name +
+                "robot = %s\nworld = %s\n" % (os.path.join(problems, "thin_wall_robot.obj"),
+                                              os.path.join(problems, "thin_wall_env.obj")) +
+                "start.x = -2.03\nstart.y = -1\nstart.theta = 0\ngoal.x = 1.97\ngoal.y = -1\ngoal.theta = 0\n"
+                "volume.min.x = -4\nvolume.min.y = -4\nvolume.max.x = 4\nvolume.max.y = 4\n"
+                "[planner]\n" + planners)
+    return path
+
+
 def bad_input(adsd, cfg, problems, work):
     cases = [
         (["--checker", "nope"], "--checker"),
@@ -92,19 +106,32 @@ def bad_input(adsd, cfg, problems, work):
     expect_bad_input(adsd, [os.path.join(work, "missing.cfg")], "missing.cfg", os.path.join(work, "bad_missing"))
 
     # A planner parameter OMPL rejects: the message names the file, the line and the key.
-    bad_cfg = os.path.join(work, "bad_range.cfg")
-    with open(bad_cfg, "w") as f:
-        f.write("[problem]\nname = bad_range\n"
-                "robot = %s\nworld = %s\n" % (os.path.join(problems, "thin_wall_robot.obj"),
-                                              os.path.join(problems, "thin_wall_env.obj")) +
-                "start.x = -2.03\nstart.y = -1\nstart.theta = 0\ngoal.x = 1.97\ngoal.y = -1\ngoal.theta = 0\n"
-                "volume.min.x = -4\nvolume.min.y = -4\nvolume.max.x = 4\nvolume.max.y = 4\n"
-                "[planner]\nrrtconnect =\nrrtconnect.range = far\n")
+    bad_cfg = thin_wall_cfg(work, problems, "bad_range", "rrtconnect =\nrrtconnect.range = far\n")
     expect_bad_input(adsd, [bad_cfg], "bad_range.cfg:17", os.path.join(work, "bad_param"))
 
     # No ompl_benchmark_statistics on PATH: exit 1 before any run, nothing written.
     env = dict(os.environ, PATH=os.path.join(work, "empty-path"))
     expect_bad_input(adsd, [cfg], "ompl_benchmark_statistics", os.path.join(work, "bad_tool"), status=1, env=env)
+
+
+def repeated_instances(adsd, problems, work):
+    """A planner's line repeated (the format's way to run it with other parameters) gives rows of
+    their own, numbered: the summary merged their runs into one row. A name with '|' keeps its row
+    in one cell; an empty name is refused."""
+    cfg = thin_wall_cfg(work, problems, "repeated", "rrtconnect =\nrrtconnect =\nrrtconnect.range = 0.5\nrrt =\n"
+                                          "rrt.name = a | b\n")
+    out = os.path.join(work, "repeated")
+    p = run(adsd, [cfg, "--runs", "1", "--time", "0.2", "--checker", "adsd", "--motion", "discrete", "--out", out])
+    if not check(p.returncode == 0, "repeated instances: exit status %d\nstderr: %s" % (p.returncode, p.stderr)):
+        return
+    for row in ("| RRTConnect | adsd | discrete | 1 |", "| RRTConnect #2 | adsd | discrete | 1 |",
+                "| a \\| b | adsd | discrete | 1 |"):
+        check(row in p.stdout, "repeated instances: no summary row starting %r:\n%s" % (row, p.stdout))
+    check("repeated.cfg:17: key 'planner.rrtconnect': another instance named 'RRTConnect': its results are named "
+          "'RRTConnect #2'" in p.stderr, "repeated instances: no warning naming the second line:\n" + p.stderr)
+    empty = thin_wall_cfg(work, problems, "empty_name", "rrtconnect =\nrrtconnect.name =\n")
+    expect_bad_input(adsd, [empty], "empty_name.cfg:17: key 'planner.rrtconnect.name': a planner's name may not be empty",
+                     os.path.join(work, "bad_empty_name"))
 
 
 def columns(db):
@@ -254,6 +281,7 @@ def main():
 
     bad_input(args.adsd, cfg, args.problems, args.work)
     full_run(args.adsd, cfg, args.work)
+    repeated_instances(args.adsd, args.problems, args.work)
     shards(args.adsd, cfg, args.work, statistics)
 
     if failures:
