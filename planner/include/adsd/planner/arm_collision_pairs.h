@@ -39,7 +39,8 @@ class ArmCollisionPairs {
   std::vector<Disabled> disabled_;
 };
 
-/// \brief Pairs never checked because the kinematic tree joins them (reason "Adjacent"):
+/// \brief Pairs of links with collision geometry never checked because the kinematic tree joins
+/// them (reason "Adjacent"):
 ///  - a parent link and its child link, through any joint, and, as MoveIt's setup assistant has
 ///    it, links whose only link between them has no collision geometry (repeatedly: a chain of
 ///    such links counts as one);
