@@ -15,6 +15,19 @@ namespace ob = ompl::base;
 
 namespace {
 
+/// A continuous joint's angle: OMPL's SO(2), whose interpolation can land on +pi exactly (the
+/// shorter arc wrapped by comparison, not by remainder), an angle its own bounds test refuses
+/// ([-pi, pi)). Every checker asks that test first, so the state halfway between 3 and -3 was
+/// invalid and the straight motion through it refused (an outside review). The angle is wrapped
+/// into [-pi, pi) after interpolation, the same angle.
+class ContinuousJointSpace : public ob::SO2StateSpace {
+ public:
+  void interpolate(const ob::State* from, const ob::State* to, double t, ob::State* state) const override {
+    ob::SO2StateSpace::interpolate(from, to, t, state);
+    enforceBounds(state);
+  }
+};
+
 /// The first few coordinates of an arm's joint vector, as they are (a continuous joint's angle in
 /// [-pi, pi)).
 class LeadingJointsProjection : public ob::ProjectionEvaluator {
@@ -51,7 +64,7 @@ ArmStateSpace::ArmStateSpace(const ArmModel& model) {
     const ArmJoint& joint = model.joints[model.activeJoints[i]];
     ob::StateSpacePtr sub;
     if (joint.type == ArmJointType::continuous) {
-      sub = std::make_shared<ob::SO2StateSpace>();
+      sub = std::make_shared<ContinuousJointSpace>();
       continuous_.push_back(true);
     } else {
       auto real = std::make_shared<ob::RealVectorStateSpace>(1);
