@@ -152,13 +152,22 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
   const Pose identity = Pose::Identity();
   for (std::size_t b = 0; b < linkOfBody_.size(); ++b) {
     const Pose& pose = linkPoses[linkOfBody_[b]];
-    if (const ConvexSolid* solid = solidHolding(b, pose)) {
-      note("link " + linkName(b) + " inside obstacle '" + solid->name + "'");
-    }
+    std::vector<std::string> touched;  // the objects whose surfaces this link meets
     for (std::size_t e = 0; e < scene_->environment.size(); ++e) {
       const std::size_t body = linkOfBody_.size() + e;
       if (!pairSeparatedAbove(b, pose, body, identity, safetyMargin_)) {
-        note("link " + linkName(b) + " and obstacle " + obstacleName(body));
+        touched.push_back(obstacleName(body));
+        note("link " + linkName(b) + " and obstacle " + touched.back());
+      }
+    }
+    // Inside a solid whose surface it does not meet: wholly inside. (A link that crosses a solid
+    // has points inside too; it was said to be inside as well as touching: an outside review.)
+    const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_;
+    for (const ConvexSolid& solid : scene_->solids) {
+      const std::string name = "'" + solid.name + "'";
+      if (std::find(touched.begin(), touched.end(), name) != touched.end()) continue;
+      for (const Vec3& local : linkComponentPoints_[b]) {
+        if (solid.containsStrictly(pose * local, slack)) note("link " + linkName(b) + " inside obstacle " + name);
       }
     }
   }
