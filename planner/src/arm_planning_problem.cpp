@@ -165,31 +165,45 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   std::size_t dof = model_->dof();  // fewer once the planning group is known
   start_.assign(dof, 0.0);
   goal_.assign(dof, 0.0);
-  for (std::size_t i = 0; i < dof; ++i) {
-    const std::string& joint = model_->joints[model_->activeJoints[i]].name;
-    if (const auto s = request.start.find(joint); s != request.start.end()) {
-      start_[i] = s->second;
-    } else if (const auto d = sceneFile.defaultJointValues.find(joint); d != sceneFile.defaultJointValues.end()) {
-      start_[i] = d->second;
-    } else {
-      // A misspelled name is the likely cause: name the start's joints the robot lacks, at their line.
-      std::string unknown;
-      int line = 0;
-      for (const auto& [given, position] : request.start) {
-        const std::string& name = given;  // a structured binding: clang 14 captures none
-        const auto named = [&name](const ArmJoint& j) { return j.name == name; };
-        if (std::any_of(model_->joints.begin(), model_->joints.end(), named)) continue;
-        unknown += (unknown.empty() ? "'" : ", '") + given + "'";
-        if (const auto l = request.startLines.find(given); l != request.startLines.end() && line == 0) line = l->second;
-      }
-      // Else the start state's first position: where the missing one belongs (no line was named).
-      if (line == 0 && !request.startLines.empty()) line = firstLine(request.startLines, [](int l) { return l; });
-      throw InputError(at(file.requestPath, line) + ": the start state has no position for joint '" + joint +
-                       "' of robot '" + model_->name + "' (neither the request's start_state nor the scene's " +
-                       "robot_state gives one" +
-                       (unknown.empty() ? std::string(")")
-                                        : "; the start_state names " + unknown + ", which the robot lacks)"));
+  // A joint neither the request's start_state nor the scene's robot_state gives starts where
+  // MoveIt's default state puts it: 0 where its limits allow, else their midpoint (a
+  // MotionPlanRequest's start is a difference from that state, and hand-written ones list only the
+  // group's joints: Atlas's 27 joints all had to be written into the scene, an outside review).
+  // Unless the start names a joint the robot lacks: a misspelling, refused at its line.
+  std::string unknown;
+  int unknownLine = 0;
+  for (const auto& [given, position] : request.start) {
+    const std::string& name = given;  // a structured binding: clang 14 captures none
+    const auto named = [&name](const ArmJoint& j) { return j.name == name; };
+    if (std::any_of(model_->joints.begin(), model_->joints.end(), named)) continue;
+    unknown += (unknown.empty() ? "'" : ", '") + given + "'";
+    if (const auto l = request.startLines.find(given); l != request.startLines.end() && unknownLine == 0) {
+      unknownLine = l->second;
     }
+  }
+  std::string defaulted;
+  for (std::size_t i = 0; i < dof; ++i) {
+    const ArmJoint& joint = model_->joints[model_->activeJoints[i]];
+    if (const auto s = request.start.find(joint.name); s != request.start.end()) {
+      start_[i] = s->second;
+    } else if (const auto d = sceneFile.defaultJointValues.find(joint.name); d != sceneFile.defaultJointValues.end()) {
+      start_[i] = d->second;
+    } else if (!unknown.empty()) {
+      throw InputError(at(file.requestPath, unknownLine) + ": the start state has no position for joint '" +
+                       joint.name + "' of robot '" + model_->name + "' (neither the request's start_state nor the " +
+                       "scene's robot_state gives one; the start_state names " + unknown + ", which the robot lacks)");
+    } else {
+      const bool zeroAllowed = joint.type == ArmJointType::continuous || (joint.lower <= 0.0 && 0.0 <= joint.upper);
+      start_[i] = zeroAllowed ? 0.0 : 0.5 * (joint.lower + joint.upper);
+      std::ostringstream value;
+      value << start_[i];
+      defaulted += (defaulted.empty() ? "" : ", ") + joint.name + " = " + value.str();
+    }
+  }
+  if (!defaulted.empty()) {
+    warnings_.push_back(at(file.requestPath, firstLine(request.startLines, [](int l) { return l; })) +
+                        ": the start_state and the scene's robot_state leave out joints, started at MoveIt's "
+                        "default (0 where the limits allow, else their midpoint): " + defaulted);
   }
   // The planning group, request.groupName: as the SRDF defines it, or else the joints the goal
   // constrains (MotionBenchMaker's requests name every joint of the group). The robot's other
