@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "adsd/error.h"
+#include "adsd/planner/rigid_body_scene.h"
 #include "output_file.h"
 
 namespace adsd::app {
@@ -191,7 +192,7 @@ std::string pageJson(const ViewerPage& page) {
     appendNumber(clearances, s.clearance);
     const ClosestPoints& c = s.closest;
     appendArray(witnesses, {c.onA.x(), c.onA.y(), c.onA.z(), c.onB.x(), c.onB.y(), c.onB.z()});
-    closest += "[" + std::to_string(c.bodyA) + "," + std::to_string(c.bodyB) + "]";
+    closest += "[" + std::to_string(c.bodyA) + "," + std::to_string(c.bodyB) + "," + jsonString(c.obstacle) + "]";
     appendArray(joints, s.joints);
   }
   out += ",\"poses\":\"" + base64(poses) + "\",\"clearance\":" + clearances + "],\"witnesses\":" + witnesses +
@@ -239,7 +240,8 @@ ClosestPoints closestPoints(const std::vector<CandidatePair>& pairs, double clea
       if (d.status == DistanceStatus::beyondCap) continue;
       if (!found || d.distance < cap) {
         cap = d.distance;
-        best = {p.bodyA, p.bodyB, d.witnessA, d.witnessB};
+        best = {p.bodyA, p.bodyB, d.witnessA, d.witnessB,
+                p.bodyB == ClosestPoints::kEnvironment ? planner::nameBeforeSplit(p.b->name()) : std::string()};
         found = true;
       }
       if (cap <= 0.0) return best;  // touching: nothing is closer, and a cap must be positive

@@ -29,6 +29,9 @@ struct ClosestPoints {
   int bodyB = kEnvironment;
   Vec3 onA = Vec3::Zero();
   Vec3 onB = Vec3::Zero();
+  /// When bodyB is kEnvironment: the object it is part of (an arm scene's collision object id), so
+  /// that the page names it rather than saying "obstacle".
+  std::string obstacle;
 };
 
 /// \brief One state shown.

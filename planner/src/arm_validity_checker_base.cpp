@@ -7,6 +7,7 @@
 #include "adsd/error.h"
 #include "adsd/tolerances.h"
 #include "adsd/planner/arm_kinematics.h"
+#include "adsd/planner/rigid_body_scene.h"
 
 namespace adsd::planner {
 
@@ -134,16 +135,8 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
   const std::vector<Pose>& linkPoses = *poses;
   const ArmModel& model = *scene_->model;
   auto linkName = [&](std::size_t body) { return "'" + model.links[linkOfBody_[body]].name + "'"; };
-  // An obstacle part is named after its object: splitIntoParts appends " part N" to the name.
-  auto obstacleName = [&](std::size_t body) {
-    std::string name = bodyMesh(body).name();
-    const std::size_t part = name.rfind(" part ");
-    if (part != std::string::npos &&
-        name.find_first_not_of("0123456789", part + 6) == std::string::npos && part + 6 < name.size()) {
-      name.erase(part);
-    }
-    return "'" + name + "'";
-  };
+  // An obstacle part is named after its object.
+  auto obstacleName = [&](std::size_t body) { return "'" + nameBeforeSplit(bodyMesh(body).name()) + "'"; };
   // Every pair in contact, each once: an object split into parts may touch a link with several.
   std::vector<std::string> found;
   auto note = [&](std::string what) {

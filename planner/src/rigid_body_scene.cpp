@@ -264,6 +264,13 @@ std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts, double 
   return parts;
 }
 
+std::string nameBeforeSplit(const std::string& partName) {
+  const std::size_t part = partName.rfind(" part ");
+  const bool numbered = part != std::string::npos && part + 6 < partName.size() &&
+                        partName.find_first_not_of("0123456789", part + 6) == std::string::npos;
+  return numbered ? partName.substr(0, part) : partName;
+}
+
 std::vector<Mesh> splitForRobot(const Mesh& environment, const std::vector<Mesh>& robot) {
   RigidBodyScene robotOnly;
   robotOnly.robot = robot;

@@ -264,6 +264,9 @@ TEST(ArmPlanCommand, ViewShowsAStartInCollisionWithAWarning) {
                        "'table', link 'elbow' and obstacle 'table'\n");
   EXPECT_NE(v.out.find("clearance   min 0 m"), std::string::npos) << v.out;
   EXPECT_TRUE(fs::is_regular_file(html));
+  // The page names the obstacle of the closest pair by its object, which the readout shows (it
+  // said 'obstacle': outside review): the environment's body -1, then the table's id.
+  EXPECT_NE(readAll(html.string()).find(",-1,\"table\"]"), std::string::npos);
 }
 
 // Without its SRDF, DRC-Hubo's own pose has links in contact that are not adjacent in the URDF:

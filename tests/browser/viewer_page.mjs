@@ -261,6 +261,10 @@ export async function checkArmViewer(browser, { html, cfg, expectedMin, screensh
       assert.ok(s.bodies.length > 1, `only ${s.bodies.length} link drawn`);
       assert.deepEqual(s.joints, s.names.map((n) => request.start[n]), 'joints at state 0 vs the request start');
       s.links.forEach((p, b) => assertSamePose(p, s.start[b], `link ${s.bodies[b]} at state 0 vs the start arm`));
+      // The closest pair is named: a link, or the collision object an obstacle part belongs to
+      // (the page said 'obstacle' for every one of them: outside review).
+      const names = await page.evaluate(() => adsdViewer.clearance.flatMap((c, i) => adsdViewer.closestBodies(i)));
+      assert.ok(names.every((name) => name !== 'obstacle' && name.length > 0), `closest pairs named ${names}`);
     },
     atEnd: async (page, state) => {
       const s = await drawn(page, state.count - 1);

@@ -68,6 +68,10 @@ inline constexpr double kPieceDiagonalPerRobotDiameter = 1.0;
 std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts = kMaxEnvironmentParts,
                                  double maxPieceDiagonal = std::numeric_limits<double>::infinity());
 
+/// \brief The name of the mesh a part of splitIntoParts() came from: \p partName less its
+/// " part N" (a mesh it did not split keeps its own name).
+std::string nameBeforeSplit(const std::string& partName);
+
 /// \brief splitIntoParts() with pieces sized to the scene's robot (kPieceDiagonalPerRobotDiameter).
 std::vector<Mesh> splitForRobot(const Mesh& environment, const std::vector<Mesh>& robot);
 
