@@ -104,16 +104,19 @@ std::string quoted(const std::string& text) {
 Document::Document(const std::string& text, std::string source)
     : source_(std::move(source)), budget_(kBudgetPerByte * text.size() + kBudgetSlack) {
   if (text.find('\0') != std::string::npos) throw InputError(source_ + ": not a text file (contains a NUL byte)");
-  try {
-    root_ = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    // yaml-cpp's marks are 0-based; a mark of -1 means the parser did not know the place.
+  // yaml-cpp's errors as ours, at their line (a mark of -1: the parser did not know the place).
+  const auto refuse = [this](const YAML::Exception& e) {
     const std::string line = e.mark.line >= 0 ? ":" + std::to_string(e.mark.line + 1) : "";
     std::string what = e.msg;
     for (char& c : what) {
       if (static_cast<unsigned char>(c) < 0x20) c = ' ';
     }
     throw InputError(source_ + line + ": not valid YAML: " + what);
+  };
+  try {
+    root_ = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    refuse(e);
   }
   std::istringstream events(text);
   YAML::Parser parser(events);
@@ -121,14 +124,18 @@ Document::Document(const std::string& text, std::string source)
   parser.HandleNextDocument(finder);
   // One document per file: the readers take the first, and a second was dropped in silence (an
   // outside review). An empty one after a `---` is no second: `rostopic echo` ends each message so.
-  RepeatedKeyFinder rest(source_);
-  if (parser.HandleNextDocument(rest)) {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
-    for (std::size_t d = 1; d < documents.size(); ++d) {
-      if (documents[d].IsNull()) continue;
-      throw InputError(source_ + ":" + std::to_string(documents[d].Mark().line + 1) +
-                       ": a second YAML document (after '---'): the file holds one");
-    }
+  // Broken, it is named as the first would be (it was an internal error: an outside review).
+  std::vector<YAML::Node> documents;
+  try {
+    RepeatedKeyFinder rest(source_);
+    if (parser.HandleNextDocument(rest)) documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    refuse(e);
+  }
+  for (std::size_t d = 1; d < documents.size(); ++d) {
+    if (documents[d].IsNull()) continue;
+    throw InputError(source_ + ":" + std::to_string(documents[d].Mark().line + 1) +
+                     ": a second YAML document (after '---'): the file holds one");
   }
 }
 
