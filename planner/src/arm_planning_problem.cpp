@@ -158,7 +158,8 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
   warnings_.insert(warnings_.end(), sceneFile.warnings.begin(), sceneFile.warnings.end());
   const MotionPlanRequestYaml request = readMotionPlanRequestYaml(file.requestPath);
   allowedPlanningTime_ = request.allowedPlanningTime;
-  scene_ = std::make_shared<const ArmScene>(makeArmScene(model_, sceneFile.objects, file.srdfPath.value_or("")));
+  scene_ = std::make_shared<const ArmScene>(
+      makeArmScene(model_, sceneFile.objects, file.srdfPath.value_or(""), sceneFile.primitives));
   warnings_.insert(warnings_.end(), scene_->warnings.begin(), scene_->warnings.end());
 
   // The joint vectors, in the model's order.

@@ -7,7 +7,7 @@
 namespace adsd::planner {
 
 ArmScene makeArmScene(std::shared_ptr<const ArmModel> model, const std::vector<Mesh>& environment,
-                      const std::string& srdfPath) {
+                      const std::string& srdfPath, const std::vector<Mesh>& solids) {
   ArmScene scene{model, ArmCollisionPairs(*model), {}, {}, {}};
   if (!srdfPath.empty()) scene.warnings = disablePairsFromSrdf(*model, srdfPath, scene.selfPairs);
   // Obstacle pieces about the size of the largest link (kPieceDiagonalPerRobotDiameter): the
@@ -19,10 +19,12 @@ ArmScene makeArmScene(std::shared_ptr<const ArmModel> model, const std::vector<M
   const double piece = linkDiameter > 0.0 ? kPieceDiagonalPerRobotDiameter * linkDiameter
                                           : std::numeric_limits<double>::infinity();
   for (const Mesh& mesh : environment) {
-    // Before the split, which cuts a large box into open pieces.
-    for (ConvexSolid& solid : convexSolidsOf(mesh)) scene.solids.push_back(std::move(solid));
     std::vector<Mesh> parts = splitIntoParts(mesh, kMaxEnvironmentParts, piece);
     for (Mesh& p : parts) scene.environment.push_back(std::move(p));
+  }
+  // A flat one (a box of no thickness) holds nothing, and stays a surface.
+  for (const Mesh& mesh : solids) {
+    if (std::optional<ConvexSolid> solid = convexSolidOf(mesh)) scene.solids.push_back(std::move(*solid));
   }
   return scene;
 }

@@ -94,32 +94,44 @@ ArmValidityCheckerBase::ArmValidityCheckerBase(const ompl::base::SpaceInformatio
   scale_ = box.diagonal().norm();
   obstacleOrder_.resize(obstacleCentres_.size());
   for (std::uint32_t e = 0; e < obstacleOrder_.size(); ++e) obstacleOrder_[e] = e;
-  if (!obstacleOrder_.empty()) buildObstacleTree(0, static_cast<std::uint32_t>(obstacleOrder_.size()));
+  if (!obstacleOrder_.empty()) {
+    buildBoxTree(obstacleCentres_, obstacleHalves_, obstacleOrder_, obstacleTree_, 0,
+                 static_cast<std::uint32_t>(obstacleOrder_.size()));
+  }
+  std::vector<Vec3> solidCentres, solidHalves;
+  for (const ConvexSolid& solid : scene_->solids) {
+    solidCentres.push_back(solid.box.center());
+    solidHalves.push_back(0.5 * solid.box.sizes());
+    solidOrder_.push_back(static_cast<std::uint32_t>(solidOrder_.size()));
+  }
+  if (!solidOrder_.empty()) {
+    buildBoxTree(solidCentres, solidHalves, solidOrder_, solidTree_, 0, static_cast<std::uint32_t>(solidOrder_.size()));
+  }
 }
 
-std::int32_t ArmValidityCheckerBase::buildObstacleTree(std::uint32_t first, std::uint32_t count) {
-  Eigen::AlignedBox3d box, centres;
+std::int32_t ArmValidityCheckerBase::buildBoxTree(const std::vector<Vec3>& centres, const std::vector<Vec3>& halves,
+                                                  std::vector<std::uint32_t>& order, std::vector<ObstacleNode>& tree,
+                                                  std::uint32_t first, std::uint32_t count) {
+  Eigen::AlignedBox3d box, spread;
   for (std::uint32_t k = first; k < first + count; ++k) {
-    const std::uint32_t e = obstacleOrder_[k];
-    box.extend(obstacleCentres_[e] - obstacleHalves_[e]);
-    box.extend(obstacleCentres_[e] + obstacleHalves_[e]);
-    centres.extend(obstacleCentres_[e]);
+    const std::uint32_t e = order[k];
+    box.extend(centres[e] - halves[e]);
+    box.extend(centres[e] + halves[e]);
+    spread.extend(centres[e]);
   }
-  const auto node = static_cast<std::int32_t>(obstacleTree_.size());
-  obstacleTree_.push_back({box.center(), 0.5 * box.sizes(), first, count, -1, -1});
+  const auto node = static_cast<std::int32_t>(tree.size());
+  tree.push_back({box.center(), 0.5 * box.sizes(), first, count, -1, -1});
   if (count <= kObstacleLeafParts) return node;
   // Split at the median centre along the axis where the centres spread most.
   Vec3::Index axis = 0;
-  centres.sizes().maxCoeff(&axis);
+  spread.sizes().maxCoeff(&axis);
   const std::uint32_t half = count / 2;
-  std::nth_element(obstacleOrder_.begin() + first, obstacleOrder_.begin() + first + half,
-                   obstacleOrder_.begin() + first + count, [&](std::uint32_t x, std::uint32_t y) {
-                     return obstacleCentres_[x][axis] < obstacleCentres_[y][axis];
-                   });
-  const std::int32_t left = buildObstacleTree(first, half);
-  const std::int32_t right = buildObstacleTree(first + half, count - half);
-  obstacleTree_[static_cast<std::size_t>(node)].left = left;
-  obstacleTree_[static_cast<std::size_t>(node)].right = right;
+  std::nth_element(order.begin() + first, order.begin() + first + half, order.begin() + first + count,
+                   [&](std::uint32_t x, std::uint32_t y) { return centres[x][axis] < centres[y][axis]; });
+  const std::int32_t left = buildBoxTree(centres, halves, order, tree, first, half);
+  const std::int32_t right = buildBoxTree(centres, halves, order, tree, first + half, count - half);
+  tree[static_cast<std::size_t>(node)].left = left;
+  tree[static_cast<std::size_t>(node)].right = right;
   return node;
 }
 
@@ -157,7 +169,7 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
     // has points inside too; it was said to be inside as well as touching: an outside review.)
     const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_;
     for (const ConvexSolid& solid : scene_->solids) {
-      const std::string name = "'" + solid.name + "'";
+      const std::string name = "'" + nameBeforeSplit(solid.name) + "'";  // as obstacleName() says it
       if (std::find(touched.begin(), touched.end(), name) != touched.end()) continue;
       for (const Vec3& local : linkComponentPoints_[b]) {
         if (solid.containsStrictly(pose * local, slack)) note("link " + linkName(b) + " inside obstacle " + name);
@@ -182,8 +194,22 @@ const ConvexSolid* ArmValidityCheckerBase::solidHolding(std::size_t body, const 
   const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_;
   for (const Vec3& local : linkComponentPoints_[body]) {
     const Vec3 point = pose * local;
-    for (const ConvexSolid& solid : scene_->solids) {
-      if (solid.containsStrictly(point, slack)) return &solid;
+    // Down the solids' box tree through the boxes that hold the point.
+    std::int32_t stack[64];  // median splits: depth <= log2(solids) + 1
+    int top = 0;
+    if (!solidTree_.empty()) stack[top++] = 0;
+    while (top > 0) {
+      const ObstacleNode& node = solidTree_[static_cast<std::size_t>(stack[--top])];
+      if (((point - node.centre).cwiseAbs() - node.half).maxCoeff() > 0.0) continue;
+      if (node.left < 0) {
+        for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+          const ConvexSolid& solid = scene_->solids[solidOrder_[k]];
+          if (solid.containsStrictly(point, slack)) return &solid;
+        }
+      } else {
+        stack[top++] = node.left;
+        stack[top++] = node.right;
+      }
     }
   }
   return nullptr;
@@ -323,6 +349,7 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
     const double w = linkWeights[linkOfBody_[b]];
     if (w > 0.0 && solidHolding(b, linkPoses[linkOfBody_[b]]) != nullptr) inside = std::min(inside, -subtract / w);
   }
+  // At most 0: the caller rejects, as the pairs' loop below stops at 0 without their minimum.
   if (inside < cap) return inside;
   thread_local std::vector<PairBound> pairs;
   // Every pair: each has its own weight, so no one distance limit culls them here.

@@ -1,39 +1,12 @@
 #include "adsd/planner/convex_solids.h"
 
-#include <numeric>
+#include <algorithm>
+#include <cmath>
 
 #include "adsd/mesh_hierarchy.h"
+#include "mesh_components.h"
 
 namespace adsd::planner {
-
-namespace {
-
-/// The connected components of a mesh's triangles (by shared vertex index), each a list of
-/// triangles, in order of first appearance.
-std::vector<std::vector<std::uint32_t>> triangleComponents(const Mesh& mesh) {
-  std::vector<std::uint32_t> parent(mesh.vertices().size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  const auto root = [&parent](std::uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (const TriangleIndices& t : mesh.triangles()) {
-    for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
-  }
-  std::vector<std::int64_t> componentOfRoot(parent.size(), -1);
-  std::vector<std::vector<std::uint32_t>> components;
-  for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
-    const std::uint32_t r = root(mesh.triangles()[t][0]);
-    if (componentOfRoot[r] < 0) {
-      componentOfRoot[r] = static_cast<std::int64_t>(components.size());
-      components.emplace_back();
-    }
-    components[static_cast<std::size_t>(componentOfRoot[r])].push_back(t);
-  }
-  return components;
-}
-
-}  // namespace
 
 bool ConvexSolid::containsStrictly(const Vec3& p, double slack) const {
   if (!box.contains(p)) return false;
@@ -43,51 +16,37 @@ bool ConvexSolid::containsStrictly(const Vec3& p, double slack) const {
   return true;
 }
 
-std::vector<ConvexSolid> convexSolidsOf(const Mesh& mesh) {
-  std::vector<ConvexSolid> solids;
-  for (const std::vector<std::uint32_t>& component : triangleComponents(mesh)) {
-    // The component as a mesh of its own, its vertices renumbered, for isClosedConvex.
-    std::vector<std::uint32_t> index(mesh.vertices().size(), UINT32_MAX);
-    std::vector<Vec3> vertices;
-    std::vector<TriangleIndices> triangles;
-    for (std::uint32_t t : component) {
-      TriangleIndices renumbered;
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t v = mesh.triangles()[t][k];
-        if (index[v] == UINT32_MAX) {
-          index[v] = static_cast<std::uint32_t>(vertices.size());
-          vertices.push_back(mesh.vertices()[v]);
-        }
-        renumbered[k] = index[v];
-      }
-      triangles.push_back(renumbered);
+std::optional<ConvexSolid> convexSolidOf(const Mesh& mesh) {
+  if (mesh.triangleCount() == 0 || !isClosedConvex(mesh)) return std::nullopt;
+  ConvexSolid solid;
+  solid.name = mesh.name();
+  solid.box = mesh.bounds();
+  // Thinner than this across a face is flat: isClosedConvex's own allowance (1e-9 of the extent).
+  const double flat = 1e-9 * solid.box.sizes().maxCoeff();
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const Vec3 a = mesh.corner(t, 0);
+    Vec3 normal = (mesh.corner(t, 1) - a).cross(mesh.corner(t, 2) - a);
+    const double length = normal.norm();
+    if (!(length > 0.0)) continue;  // no area, no plane
+    normal /= length;
+    // Out: away from the vertex farthest from the face's plane (faces may be wound either way;
+    // every vertex lies on the inner side). None off the plane: a flat mesh, no solid.
+    double farthest = 0.0;
+    for (const Vec3& v : mesh.vertices()) {
+      const double off = normal.dot(v - a);
+      if (std::abs(off) > std::abs(farthest)) farthest = off;
     }
-    const Mesh part(vertices, triangles, mesh.name());
-    if (!isClosedConvex(part)) continue;
-    ConvexSolid solid;
-    solid.name = mesh.name();
-    solid.box = part.bounds();
-    // Outward: away from the vertices' mean, which lies inside a closed convex solid; faces may
-    // be wound either way.
-    const Vec3 mean = std::accumulate(vertices.begin(), vertices.end(), Vec3(Vec3::Zero())) /
-                      static_cast<double>(vertices.size());
-    for (std::size_t t = 0; t < part.triangleCount(); ++t) {
-      const Vec3 a = part.corner(t, 0);
-      Vec3 normal = (part.corner(t, 1) - a).cross(part.corner(t, 2) - a);
-      const double length = normal.norm();
-      if (!(length > 0.0)) continue;  // no area, no plane
-      normal /= length;
-      if (normal.dot(mean - a) > 0.0) normal = -normal;
-      solid.planes.emplace_back(normal.x(), normal.y(), normal.z(), normal.dot(a));
-    }
-    if (!solid.planes.empty()) solids.push_back(std::move(solid));
+    if (!(std::abs(farthest) > flat)) return std::nullopt;
+    if (farthest > 0.0) normal = -normal;
+    solid.planes.emplace_back(normal.x(), normal.y(), normal.z(), normal.dot(a));
   }
-  return solids;
+  if (solid.planes.empty()) return std::nullopt;
+  return solid;
 }
 
 std::vector<Vec3> vertexPerComponent(const Mesh& mesh) {
   std::vector<Vec3> points;
-  for (const std::vector<std::uint32_t>& component : triangleComponents(mesh)) {
+  for (const std::vector<std::size_t>& component : connectedComponents(mesh)) {
     points.push_back(mesh.corner(component.front(), 0));
   }
   return points;

@@ -120,11 +120,12 @@ void append(const Mesh& part, const Pose& pose, std::vector<Vec3>& vertices, std
   }
 }
 
-/// Reads shapes[] with poses[] (primitives or meshes) of one object into its world-frame mesh.
+/// Reads shapes[] with poses[] (primitives or meshes) of one object into its world-frame mesh;
+/// with \p placed, each shape's world-frame mesh is added there too.
 template <typename MakeShape>
 void readShapes(const Document& doc, const Field& object, const char* shapesKey, const char* posesKey,
                 const Pose& objectPose, MakeShape&& make, std::vector<Vec3>& vertices,
-                std::vector<TriangleIndices>& triangles) {
+                std::vector<TriangleIndices>& triangles, std::vector<Mesh>* placed = nullptr) {
   const Field shapes = doc.child(object, shapesKey);
   if (!shapes.node.IsDefined()) return;
   const std::size_t n = doc.sequenceLength(shapes);
@@ -141,7 +142,13 @@ void readShapes(const Document& doc, const Field& object, const char* shapesKey,
     const Field pose = doc.element(poses, i);
     doc.requireMap(pose);
     // MoveIt: world_T_shape = world_T_object * object_T_shape.
-    append(part, objectPose * doc.pose(pose), vertices, triangles);
+    const Pose shapePose = objectPose * doc.pose(pose);
+    append(part, shapePose, vertices, triangles);
+    if (placed != nullptr) {
+      std::vector<Vec3> moved;
+      for (const Vec3& v : part.vertices()) moved.push_back(shapePose * v);
+      placed->emplace_back(std::move(moved), part.triangles(), part.name());
+    }
   }
 }
 
@@ -241,7 +248,7 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
     std::vector<Vec3> vertices;
     std::vector<TriangleIndices> triangles;
     readShapes(doc, object, "primitives", "primitive_poses", objectPose,
-               [&](const Field& p) { return primitiveMesh(doc, p, id); }, vertices, triangles);
+               [&](const Field& p) { return primitiveMesh(doc, p, id); }, vertices, triangles, &scene.primitives);
     readShapes(doc, object, "meshes", "mesh_poses", objectPose,
                [&](const Field& m) { return meshShape(doc, m, id); }, vertices, triangles);
     if (triangles.empty()) doc.fail(object, "object " + yaml::quoted(id) + " has no primitives and no meshes");

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "adsd/mesh_hierarchy.h"
+#include "mesh_components.h"
 
 namespace adsd::planner {
 
@@ -216,27 +217,7 @@ void groupPieces(std::vector<std::size_t> pieces, std::size_t groups, const std:
 }  // namespace
 
 std::vector<Mesh> splitIntoParts(const Mesh& mesh, std::size_t maxParts, double maxPieceDiagonal) {
-  // Union-find over vertices: the corners of a triangle belong together.
-  std::vector<std::uint32_t> parent(mesh.vertices().size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  const auto root = [&parent](std::uint32_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (const TriangleIndices& t : mesh.triangles()) {
-    for (int k = 1; k < 3; ++k) parent[root(t[k])] = root(t[0]);
-  }
-  // Components in order of first appearance.
-  std::vector<std::int64_t> componentOfRoot(parent.size(), -1);
-  std::vector<TriangleList> components;
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const std::uint32_t r = root(mesh.triangles()[t][0]);
-    if (componentOfRoot[r] < 0) {
-      componentOfRoot[r] = static_cast<std::int64_t>(components.size());
-      components.emplace_back();
-    }
-    components[componentOfRoot[r]].push_back(t);
-  }
+  std::vector<TriangleList> components = connectedComponents(mesh);
   // Large components cut into pieces: a room, a maze or a box the robot sits in has a convex hull
   // that holds the robot, so no hull-based bound can separate them; its pieces' hulls can.
   std::vector<TriangleList> pieces;

@@ -14,6 +14,7 @@
 #include <ompl/base/SpaceInformation.h>
 
 #include "adsd/error.h"
+#include "adsd/mesh_hierarchy.h"
 #include "adsd/planner/arm_validity_checker.h"
 #include "adsd/planner/features.h"
 #if ADSD_PLANNER_HAS_FCL
@@ -115,18 +116,28 @@ TEST(ArmValidityChecker, PairsInContactNameTheLinkAndTheObstacle) {
             (std::vector<std::string>{"link 'arm' and obstacle 'box'", "link 'tip' and obstacle 'box'"}));
 }
 
-// A closed convex obstacle (a primitive) is a solid, as in MoveIt, whose FCL primitives are: the
-// small arm wholly inside a box is in collision, though no surfaces meet (surface distance about
-// 4.5). The same box less one triangle is a surface only, and the arm inside it free.
-TEST(ArmValidityChecker, ALinkInsideAClosedConvexObstacleIsInCollision) {
+// A primitive obstacle is a solid, as in MoveIt, whose FCL primitives are: the small arm wholly
+// inside a box is in collision, though no surfaces meet (surface distance about 4.5). The same box
+// as a mesh object is a surface, as MoveIt's meshes are (FCL's triangle trees), and the arm inside
+// it free; so is a box of no thickness given as a solid (a quad in both windings, the back split
+// along the other diagonal: closed and convex, it held half of its bounding box, an outside review).
+TEST(ArmValidityChecker, ALinkInsideAPrimitiveObstacleIsInCollision) {
   auto model = std::make_shared<const ArmModel>(readUrdf(test::armTestData("slider_arm.urdf")));
   const Mesh shell = test::placedBox(Vec3(10.0, 10.0, 10.0), Vec3::Zero(), Pose::Identity(), "shell");
   std::vector<TriangleIndices> opened = shell.triangles();
   opened.pop_back();
-  const ArmScene inside = makeArmScene(model, {shell});
-  const ArmScene insideOpen = makeArmScene(model, {Mesh(shell.vertices(), opened, "open shell")});
+  const ArmScene inside = makeArmScene(model, {shell}, "", {shell});
+  const ArmScene insideMesh = makeArmScene(model, {shell});
+  const ArmScene insideOpen = makeArmScene(model, {Mesh(shell.vertices(), opened, "open shell")}, "",
+                                           {Mesh(shell.vertices(), opened, "open shell")});
+  const Mesh sheet(std::vector<Vec3>{{-5, -5, 0}, {5, -5, 0.1}, {5, 5, 0.2}, {-5, 5, 0.1}},
+                   std::vector<TriangleIndices>{{0, 1, 2}, {0, 2, 3}, {1, 0, 3}, {1, 3, 2}}, "sheet");
+  ASSERT_TRUE(isClosedConvex(sheet));  // closed and convex, but it holds nothing
+  const ArmScene beside = makeArmScene(model, {sheet}, "", {sheet});
   ASSERT_EQ(inside.solids.size(), 1u);
+  EXPECT_TRUE(insideMesh.solids.empty());
   EXPECT_TRUE(insideOpen.solids.empty());
+  EXPECT_TRUE(beside.solids.empty());
   auto si = spaceFor(*model);
   ompl::base::ScopedState<> s(si->getStateSpace());
   const double q[2] = {0.0, 0.0};
@@ -150,10 +161,12 @@ TEST(ArmValidityChecker, ALinkInsideAClosedConvexObstacleIsInCollision) {
 #if ADSD_PLANNER_HAS_FCL
   checkSolid(FclArmValidityChecker(si, inside), "FCL's");
 #endif
-  const ArmValidityChecker open(si, insideOpen);
-  EXPECT_TRUE(open.isValid(s.get()));
-  EXPECT_GT(open.obstacleClearanceUpTo(s.get(), std::numeric_limits<double>::infinity()), 4.0);
-  EXPECT_TRUE(open.pairsInContact(s.get()).empty());
+  for (const ArmScene* surface : {&insideMesh, &insideOpen}) {
+    const ArmValidityChecker checker(si, *surface);
+    EXPECT_TRUE(checker.isValid(s.get()));
+    EXPECT_GT(checker.obstacleClearanceUpTo(s.get(), std::numeric_limits<double>::infinity()), 4.0);
+    EXPECT_TRUE(checker.pairsInContact(s.get()).empty());
+  }
 }
 
 /// States to compare with the brute force: \p regular, or \p sanitized in sanitizer builds, where

@@ -80,6 +80,12 @@ TEST(PlanningSceneYaml, WorldFrameVerticesOfABoxSphereCylinderAndMesh) {
   EXPECT_EQ(scene.frames[1], "");
   EXPECT_EQ(scene.lines[0], 8);
   EXPECT_EQ(scene.lines[3], 36);
+  // The primitives, each on its own (the solids of convex_solids.h), named by their object; the
+  // sheet, a mesh object, is none of them.
+  ASSERT_EQ(scene.primitives.size(), 3u);
+  EXPECT_EQ(scene.primitives[0].name(), "table");
+  EXPECT_EQ(scene.primitives[2].name(), "pole");
+  EXPECT_EQ(scene.primitives[0].vertices(), scene.objects[0].vertices());
 
   // table: object at (1, 0, 0) turned 90 degrees about z, (x, y, z) -> (-y, x, z); the box's centre
   // (0.5, 0, 0.2) goes to (1, 0.5, 0.2) and its half sides (0.2, 0.1, 0.05) become (0.1, 0.2, 0.05):
@@ -180,6 +186,8 @@ TEST(PlanningSceneYamlErrors, BrokenYamlNamesTheLine) {
   // `rostopic echo` ends each message, is none.
   EXPECT_ERROR("name: a\n---\nname: b\n", ":3:", "a second YAML document (after '---'): the file holds one");
   EXPECT_NO_THROW(parsePlanningSceneYaml(std::string(kScene) + "---\n", "s.yaml"));
+  // Broken after the first: named at its line, as the first would be (an internal error before).
+  EXPECT_ERROR("name: a\n---\nname: [b\n", ":4:", "not valid YAML");
 }
 
 TEST(PlanningSceneYamlErrors, MissingFieldAndWrongType) {

@@ -25,16 +25,17 @@ struct ArmScene {
   std::vector<Mesh> environment;
   /// What reading the SRDF warned of (disablePairsFromSrdf), one line each.
   std::vector<std::string> warnings;
-  /// The obstacles' closed convex components (every primitive's mesh among them) as solids: a
-  /// link inside one is in collision (convex_solids.h). Filled by makeArmScene.
+  /// Obstacles that are solids (a scene's primitives: convex_solids.h): a link inside one is in
+  /// collision. Filled by makeArmScene.
   std::vector<ConvexSolid> solids;
 };
 
 /// \brief An ArmScene with adjacency-disabled self pairs (and an SRDF's, when \p srdfPath is not
 /// empty); the environment's meshes are split into parts for the broad phase (splitIntoParts,
-/// pieces about the size of the arm's largest link), and their closed convex components kept
-/// whole as solids.
+/// pieces about the size of the arm's largest link). \p solids: the obstacles among them that are
+/// solids, each a closed convex mesh (PlanningSceneYaml::primitives; convexSolidOf); one that is
+/// not, or is flat, stays a surface only.
 ArmScene makeArmScene(std::shared_ptr<const ArmModel> model, const std::vector<Mesh>& environment,
-                      const std::string& srdfPath = "");
+                      const std::string& srdfPath = "", const std::vector<Mesh>& solids = {});
 
 }  // namespace adsd::planner

@@ -151,7 +151,15 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   };
   std::vector<ObstacleNode> obstacleTree_;  ///< root first; empty without obstacles
   std::vector<std::uint32_t> obstacleOrder_;  ///< obstacle part indices, leaf by leaf
-  std::int32_t buildObstacleTree(std::uint32_t first, std::uint32_t count);
+  /// The same tree over the scene's solids' boxes (ArmScene::solids): a cage of 146 bars made
+  /// every free state test each bar's box for each link.
+  std::vector<ObstacleNode> solidTree_;
+  std::vector<std::uint32_t> solidOrder_;
+  /// Builds \p tree over boxes (\p centres, \p halves) order[first, first + count): median
+  /// splits, a few boxes per leaf. Returns the node's index.
+  static std::int32_t buildBoxTree(const std::vector<Vec3>& centres, const std::vector<Vec3>& halves,
+                                   std::vector<std::uint32_t>& order, std::vector<ObstacleNode>& tree,
+                                   std::uint32_t first, std::uint32_t count);
   mutable QueryCounters counters_;
 };
 

@@ -1,16 +1,16 @@
 #pragma once
 /// \file
-/// \brief Closed convex obstacles taken as solids: a link inside one is in collision, as MoveIt
-/// (FCL's primitives) has it, though no two surfaces meet.
+/// \brief An arm scene's primitive obstacles taken as solids: a link inside one is in collision,
+/// as MoveIt has it, though no two surfaces meet.
 ///
 /// The core measures between surfaces (docs/limitations.md): a robot link wholly inside a box
-/// obstacle is as far from it as from its walls. An arm scene's primitives (boxes, cylinders,
-/// spheres) are solids in MoveIt, and so are, here, the closed convex parts of its mesh objects:
-/// for them, inside is decided by the faces' planes. A connected link mesh whose surface meets no
-/// obstacle's lies wholly inside or wholly outside each solid, so one vertex of each of its
-/// connected components decides.
+/// obstacle is as far from it as from its walls. MoveIt's primitives (boxes, cylinders, spheres)
+/// are solids (FCL's shapes), its mesh objects surfaces (FCL's triangle trees), and so they are
+/// here. Inside a primitive's mesh (closed, convex) is decided by its faces' planes. A connected
+/// link mesh whose surface meets no obstacle's lies wholly inside or wholly outside each solid, so
+/// one vertex of each of its connected components decides.
 
-#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,9 +31,11 @@ struct ConvexSolid {
   bool containsStrictly(const Vec3& p, double slack) const;
 };
 
-/// \brief The connected components of \p mesh (triangles sharing a vertex) that are closed and
-/// convex (adsd::isClosedConvex on each), as solids named after the mesh.
-std::vector<ConvexSolid> convexSolidsOf(const Mesh& mesh);
+/// \brief \p mesh as a solid, named after it, when it bounds one: closed and convex
+/// (adsd::isClosedConvex, so at most MeshHierarchy::kConvexCheckVertices vertices, as every
+/// primitive_meshes.h mesh is), and not flat (a face given in both windings is closed and convex
+/// too, and holds nothing). Else nothing.
+std::optional<ConvexSolid> convexSolidOf(const Mesh& mesh);
 
 /// \brief One vertex of each connected component of \p mesh (a vertex of its first triangle).
 std::vector<Vec3> vertexPerComponent(const Mesh& mesh);

@@ -35,6 +35,9 @@ struct PlanningSceneYaml {
   /// frame): world_T_shape = object `pose` * the shape's primitive or mesh pose (MoveIt's
   /// composition). Boxes exact; spheres and cylinders as primitive_meshes.h's containing meshes.
   std::vector<Mesh> objects;
+  /// Each primitive's own mesh (in `objects` too), world frame, named by its object's id: the
+  /// solids of the arm scene (convex_solids.h), as MoveIt's primitives are.
+  std::vector<Mesh> primitives;
   std::vector<std::string> frames;  ///< header.frame_id of each object ("" when absent)
   std::vector<int> lines;           ///< the line where each object starts
   /// `robot_state.joint_state`: joint name to position (radians or metres); empty when absent.
