@@ -90,6 +90,35 @@ class RepeatedKeyFinder : public YAML::EventHandler {
   std::vector<Collection> open_;
 };
 
+/// Whether a document holds anything (a null alone is an empty document, as `---` at the end of a
+/// file gives), and the line where it begins.
+class DocumentContent : public YAML::EventHandler {
+ public:
+  bool found = false;
+  int line = 0;
+
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { note(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t, const std::string&) override { note(mark); }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    note(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    note(mark);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void note(const YAML::Mark& mark) {
+    if (found) return;
+    found = true;
+    line = mark.line + 1;  // yaml-cpp's marks are 0-based
+  }
+};
+
 }  // namespace
 
 std::string quoted(const std::string& text) {
@@ -124,17 +153,16 @@ Document::Document(const std::string& text, std::string source)
   parser.HandleNextDocument(finder);
   // One document per file: the readers take the first, and a second was dropped in silence (an
   // outside review). An empty one after a `---` is no second: `rostopic echo` ends each message so.
-  // Broken, it is named as the first would be (it was an internal error: an outside review).
-  std::vector<YAML::Node> documents;
+  // Broken, it is named as the first would be (it was an internal error: an outside review). One
+  // more document is read, by events: yaml-cpp 0.7's LoadAll never ended on ",a# " (the fuzzer).
+  DocumentContent second;
   try {
-    RepeatedKeyFinder rest(source_);
-    if (parser.HandleNextDocument(rest)) documents = YAML::LoadAll(text);
+    parser.HandleNextDocument(second);
   } catch (const YAML::Exception& e) {
     refuse(e);
   }
-  for (std::size_t d = 1; d < documents.size(); ++d) {
-    if (documents[d].IsNull()) continue;
-    throw InputError(source_ + ":" + std::to_string(documents[d].Mark().line + 1) +
+  if (second.found) {
+    throw InputError(source_ + ":" + std::to_string(second.line) +
                      ": a second YAML document (after '---'): the file holds one");
   }
 }
