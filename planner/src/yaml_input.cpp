@@ -172,7 +172,13 @@ Field Document::root() const {
 }
 
 void Document::fail(const Field& f, const std::string& what) const {
-  const std::string field = f.path.empty() ? "the document" : "field '" + f.path + "'";
+  // A key is the file's text: its control characters (a line end in a quoted key) would break the
+  // one-line message (the fuzzer).
+  std::string path = f.path;
+  for (char& c : path) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  }
+  const std::string field = path.empty() ? "the document" : "field '" + path + "'";
   throw InputError(source_ + ":" + std::to_string(f.line) + ": " + field + ": " + what);
 }
 
