@@ -167,12 +167,11 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
     }
     // Inside a solid whose surface it does not meet: wholly inside. (A link that crosses a solid
     // has points inside too; it was said to be inside as well as touching: an outside review.)
-    const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_;
     for (const ConvexSolid& solid : scene_->solids) {
       const std::string name = "'" + nameBeforeSplit(solid.name) + "'";  // as obstacleName() says it
       if (std::find(touched.begin(), touched.end(), name) != touched.end()) continue;
       for (const Vec3& local : linkComponentPoints_[b]) {
-        if (solid.containsStrictly(pose * local, slack)) note("link " + linkName(b) + " inside obstacle " + name);
+        if (solid.containsStrictly(pose * local, insideSlack())) note("link " + linkName(b) + " inside obstacle " + name);
       }
     }
   }
@@ -190,8 +189,7 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
 }
 
 const ConvexSolid* ArmValidityCheckerBase::solidHolding(std::size_t body, const Pose& pose) const {
-  // A point on a solid's surface is left to the distance queries, which find it in contact.
-  const double slack = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_;
+  const double slack = insideSlack();
   for (const Vec3& local : linkComponentPoints_[body]) {
     const Vec3 point = pose * local;
     // Down the solids' box tree through the boxes that hold the point.

@@ -121,13 +121,22 @@ class DocumentContent : public YAML::EventHandler {
 
 }  // namespace
 
-std::string quoted(const std::string& text) {
-  std::string s = text.size() <= kMaxEchoedCharacters ? text : text.substr(0, kMaxEchoedCharacters) + "...";
-  for (char& c : s) {
+namespace {
+
+/// \p text with its control characters as '?': the file's text in a one-line message.
+std::string printable(std::string text) {
+  for (char& c : text) {
     const auto u = static_cast<unsigned char>(c);
     if (u < 0x20 || u == 0x7f) c = '?';
   }
-  return "'" + s + "'";
+  return text;
+}
+
+}  // namespace
+
+std::string quoted(const std::string& text) {
+  return "'" + printable(text.size() <= kMaxEchoedCharacters ? text : text.substr(0, kMaxEchoedCharacters) + "...") +
+         "'";
 }
 
 Document::Document(const std::string& text, std::string source)
@@ -172,13 +181,8 @@ Field Document::root() const {
 }
 
 void Document::fail(const Field& f, const std::string& what) const {
-  // A key is the file's text: its control characters (a line end in a quoted key) would break the
-  // one-line message (the fuzzer).
-  std::string path = f.path;
-  for (char& c : path) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  }
-  const std::string field = path.empty() ? "the document" : "field '" + path + "'";
+  // A key is the file's text: a line end in a quoted key broke the one-line message (the fuzzer).
+  const std::string field = f.path.empty() ? "the document" : "field '" + printable(f.path) + "'";
   throw InputError(source_ + ":" + std::to_string(f.line) + ": " + field + ": " + what);
 }
 

@@ -15,6 +15,7 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/StateValidityChecker.h>
 
+#include "adsd/tolerances.h"
 #include "adsd/planner/arm_scene.h"
 #include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/query_counters.h"
@@ -26,8 +27,7 @@ namespace adsd::planner {
 ///
 /// A state is valid when it lies within the space's bounds, every such distance is above the
 /// safety margin (default 0: touching is a collision), and no link lies inside one of the scene's
-/// solids (ArmScene::solids: a primitive, a closed convex object), where its distance and the
-/// clearance are 0. The space must be an ArmStateSpace of the
+/// solids (ArmScene::solids: its primitives), where its distance and the clearance are 0. The space must be an ArmStateSpace of the
 /// scene's model. All const methods are thread-safe and take no lock: the joint vector, the link
 /// poses and the pair list live in thread_local scratch, and the counters are atomic.
 ///
@@ -124,6 +124,9 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// The scene's solid that holds link body \p body at \p pose (a vertex of each of its
   /// components strictly inside), or null: ArmScene::solids.
   const ConvexSolid* solidHolding(std::size_t body, const Pose& pose) const;
+  /// How far inside a solid's faces a point must lie to count as inside (the roundoff allowance
+  /// at the scene's scale): on a face, the distance queries find the contact.
+  double insideSlack() const { return tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_; }
   /// Whether some link lies inside a solid at these poses.
   bool anyLinkInsideSolid(const std::vector<Pose>& linkPoses) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
