@@ -245,12 +245,27 @@ bool simplifies(const PlanArguments& a, ObjectiveKind objective) {
 /// finger), can step over it: OMPL then reports a solution that the summary's finer measure finds
 /// in contact. Said, instead of exit status 0 under "solved yes" (the path and page are written, to
 /// look at it).
-int reportContact(double leastClearance, double safetyMargin, const ompl::base::SpaceInformation& si) {
+int reportContact(double leastClearance, double safetyMargin, const ompl::base::SpaceInformation& si,
+                  const char* where) {
   if (!(leastClearance <= safetyMargin)) return 0;
-  std::printf("contact     the path comes within the safety margin (%g) at a measured state: the discrete motion "
-              "validator checks states %g apart and stepped over it; --motion certified proves every motion\n",
-              safetyMargin, si.getStateValidityCheckingResolution() * si.getMaximumExtent());
+  std::printf("contact     the path comes within the safety margin (%g) %s: the discrete motion validator checks "
+              "states %g apart and stepped over it; --motion certified proves every motion\n",
+              safetyMargin, where, si.getStateValidityCheckingResolution() * si.getMaximumExtent());
   return 1;
+}
+
+/// A rigid body's verdict from leastClearanceAlong: a state within the margin found (contact), or
+/// none found and none proven impossible within its queries. Exit status 1 for the second too
+/// unless every motion was certified: a discretely checked path is then neither proven nor refuted.
+int reportAlong(const PathLeastClearance& along, double safetyMargin, const ompl::base::SpaceInformation& si,
+                bool certified) {
+  if (reportContact(along.least, safetyMargin, si, "along its motions") != 0) return 1;
+  if (along.lowerBound > safetyMargin) return 0;
+  std::printf("unproven    no state found within the safety margin (%g), but %zu clearance queries did not prove "
+              "every state between the measured ones beyond it%s\n",
+              safetyMargin, along.queries,
+              certified ? " (the certified motion validator proved each motion)" : "; --motion certified proves every motion");
+  return certified ? 0 : 1;
 }
 
 /// The summary lines every problem kind prints after its "problem" and "setup" lines.
@@ -358,7 +373,8 @@ int planArm(const PlanArguments& a) {
     writeArmViewerHtml(*a.htmlFile, problem, &path, "adsd plan, planner " + plannerName);
     std::printf("viewer      %s\n", a.htmlFile->c_str());
   }
-  return reportContact(measures.minClearance, problem.checker()->safetyMargin(), *problem.spaceInformation());
+  return reportContact(measures.minClearance, problem.checker()->safetyMargin(), *problem.spaceInformation(),
+                       "at a measured state");
 }
 
 int plan(const std::vector<std::string>& args) {
@@ -426,7 +442,8 @@ int plan(const std::vector<std::string>& args) {
     writeViewerHtml(*a.htmlFile, file, problem, &path, "adsd plan, planner " + plannerName);
     std::printf("viewer      %s\n", a.htmlFile->c_str());
   }
-  return reportContact(along.least, problem.checker()->safetyMargin(), *problem.spaceInformation());
+  return reportAlong(along, problem.checker()->safetyMargin(), *problem.spaceInformation(),
+                     problem.certifiedValidator() != nullptr);
 }
 
 }  // namespace

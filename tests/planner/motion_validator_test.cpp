@@ -227,6 +227,47 @@ TEST(LeastClearanceAlong, FindsTheWallADiscretePathStepsOverAndTheLeastOverTheTo
               along.queries, top.least, top.lowerBound, top.queries, dense);
 }
 
+// A path whose first state nearly touches the wall, then crosses it: the least clearance measured
+// (at that state) is below the tolerance's floor (a millionth of the scene), so a search that
+// stopped once the least was within tolerance stopped at once, with the crossing's intervals
+// bounded at 0 unexamined, and `adsd plan` called such a path free (an outside review: a cow
+// through a window's edge). Whether the path comes within the margin is decided too.
+TEST(LeastClearanceAlong, AStateNearlyTouchingDoesNotHideACrossingAfterIt) {
+  SceneFixture f = test::thinWallFixture();
+  auto checker = std::make_shared<MeshValidityChecker>(f.si, f.scene);
+  f.si->setStateValidityChecker(checker);
+  f.si->setup();
+  ob::ScopedState<ob::SE2StateSpace> start(f.si), goal(f.si), near(f.si);
+  thinWallEnds(f, start, goal);
+  // Along the crossing, the last state before the wall, found by halving: clear by less than a
+  // ten-millionth of the scene.
+  double clearT = 0.0, blockedT = 2.03 / 4.0;  // at x = 0, in the wall
+  f.si->getStateSpace()->interpolate(start.get(), goal.get(), blockedT, near.get());
+  ASSERT_FALSE(checker->isValid(near.get())) << "the crossing is in the wall at x = 0";
+  for (int i = 0; i < 200 && blockedT - clearT > 1e-8; ++i) {
+    const double t = 0.5 * (clearT + blockedT);
+    f.si->getStateSpace()->interpolate(start.get(), goal.get(), t, near.get());
+    (checker->isValid(near.get()) ? clearT : blockedT) = t;
+  }
+  f.si->getStateSpace()->interpolate(start.get(), goal.get(), clearT, near.get());
+  const double nearClearance = checker->clearance(near.get());
+  ASSERT_GT(nearClearance, 0.0);
+  ASSERT_LT(nearClearance, 1e-7 * checker->scale());
+  ompl::geometric::PathGeometric fromNear(f.si, near.get(), goal.get());
+  const PathLeastClearance along = leastClearanceAlong(fromNear, *checker);
+  EXPECT_EQ(along.least, 0.0) << "the wall right after the first state";
+  EXPECT_EQ(along.lowerBound, 0.0);
+  // And a path that only nearly touches, then turns away, is not called in contact.
+  ob::ScopedState<ob::SE2StateSpace> back(f.si);
+  back->setXY(-2.03, 1.0);
+  back->setYaw(0.0);
+  ompl::geometric::PathGeometric away(f.si, near.get(), back.get());
+  const PathLeastClearance awayAlong = leastClearanceAlong(away, *checker);
+  EXPECT_GT(awayAlong.least, 0.0);
+  EXPECT_LE(awayAlong.least, nearClearance);
+  EXPECT_GT(awayAlong.lowerBound, 0.0) << "proven clear, in " << awayAlong.queries << " queries";
+}
+
 // The states a path is measured and shown at (measuredStates): the validity-checking resolution's,
 // as PathGeometric::interpolate() makes them, state for state; a path whose resolution would need
 // millions of states (a path file of random states: `adsd view` took 25 s, 830 MB and a 138 MB

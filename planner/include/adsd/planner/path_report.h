@@ -56,7 +56,8 @@ struct PathLeastClearance {
 /// at most L |t' - t| (L as CertifiedMotionValidator's), so the clearance between states measured
 /// at t and t' is at least (c + c' - L |t' - t|) / 2; the interval of the smallest such bound is
 /// halved, by one query at its middle, until that bound is within \p relativeTolerance of the least
-/// found, or kAbsoluteToleranceFraction of the scene's scale (or \p maxQueries are spent:
+/// found, or kAbsoluteToleranceFraction of the scene's scale, and until a state within the
+/// checker's safety margin is found or every bound is beyond it (or \p maxQueries are spent:
 /// lowerBound says what was proven). Starts from the states measurePath measures (measuredStates).
 PathLeastClearance leastClearanceAlong(const ompl::geometric::PathGeometric& path,
                                        const RigidBodyValidityChecker& checker, double relativeTolerance = 0.01,
