@@ -775,4 +775,33 @@ TEST(MeshDistance, AStackOfCopiesOfOneTriangleIsFinishedFromScratch) {
   EXPECT_EQ(v.counters.treeAbandoned, 0);
 }
 
+// Refit (Mesh::setVertices on a mesh with a tree) fits every node's box to its own vertices, as
+// the build does: a deformation and its reversal leave the built boxes, and queries on them open
+// the same node pairs. Fitted to its children's box corners, every level's box grew (an outside
+// review: the cow against the bunny opened 6 times the node pairs after a setVertices of the
+// vertices it already had).
+TEST(MeshHierarchy, ARefitToTheBuiltVerticesGivesTheBuiltBoxes) {
+  Mesh knot = shapes::knottedTube(1.0, 0.15, 2, 3, 160, 12);
+  Mesh ball = shapes::sphere(0.3, 24);
+  knot.buildHierarchy();
+  ball.buildHierarchy();
+  const std::vector<Vec3> built = knot.vertices();
+  const std::vector<MeshHierarchy::Node> builtNodes = knot.hierarchy()->nodes();
+  const Pose poseBall(Eigen::Translation3d(0.4, 1.9, 0.3));
+  const DistanceResult before = distance(knot, Pose::Identity(), ball, poseBall, DistanceOptions::exactDistance());
+  std::vector<Vec3> bent = built;
+  for (Vec3& v : bent) v.z() += 0.3 * std::sin(2.0 * v.x());
+  knot.setVertices(bent);
+  knot.setVertices(built);
+  const std::vector<MeshHierarchy::Node>& nodes = knot.hierarchy()->nodes();
+  ASSERT_EQ(nodes.size(), builtNodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    EXPECT_EQ(nodes[i].box.center, builtNodes[i].box.center) << "node " << i;
+    EXPECT_EQ(nodes[i].box.half, builtNodes[i].box.half) << "node " << i;
+  }
+  const DistanceResult after = distance(knot, Pose::Identity(), ball, poseBall, DistanceOptions::exactDistance());
+  EXPECT_EQ(after.distance, before.distance);
+  EXPECT_EQ(after.counters.subMeshPairs, before.counters.subMeshPairs);
+}
+
 }  // namespace adsd
