@@ -84,6 +84,7 @@ void Query::placeFrames() {
   rotationAB_ = inverseOf(rotationBA_);
   magnitude_ = std::sqrt(3.0) * (a_.maxAbsCoordinate() + b_.maxAbsCoordinate()) + translationBA_.norm();
   roundoff_ = tolerance::kBoundSafetyUlps * tolerance::kEpsilon * magnitude_;
+  tieSlack_ = std::min(roundoff_, tolerance::kTieSlack * std::max(a_.diagonal(), b_.diagonal()));
 }
 
 namespace {
@@ -164,18 +165,19 @@ bool Query::skip(double lowerSafe) {
   bool drop = false;
   switch (options_.mode) {
     // Exact (and capped below the cap): a pair that can be nearer than the best by no more than the
-    // roundoff allowance cannot change the answer beyond the accuracy promised (distance.h), and
-    // where that allowance outgrows the meshes (posed 1e15 x their size apart) every pair is such a
-    // pair: without this, each was opened down to its triangles (cow and bunny 1e15 apart: 21
-    // million triangle pairs, 4 s, for an answer the first pair gave).
-    case QueryMode::exact: drop = lowerSafe >= best_ - roundoff_; break;
+    // roundoff allowance and the tie slack (exactDropFrom) cannot change the answer beyond the
+    // accuracy promised (distance.h), and where that allowance outgrows the meshes (posed 1e15 x
+    // their size apart) every pair is such a pair: without this, each was opened down to its
+    // triangles (cow and bunny 1e15 apart: 21 million triangle pairs, 4 s, for an answer the first
+    // pair gave). The tie slack drops the pairs tied with the best (tolerance::kTieSlack).
+    case QueryMode::exact: drop = lowerSafe >= exactDropFrom(); break;
     case QueryMode::tolerance:
       // Slack measured on the pair's own lower bound, not on the running best: the running best
       // only falls, and the interval's width must hold for the final one.
       drop = lowerSafe + std::max(options_.absTolerance, options_.relTolerance * std::max(lowerSafe, 0.0)) >= best_;
       break;
     case QueryMode::threshold: drop = lowerSafe > options_.threshold || lowerSafe >= best_; break;
-    case QueryMode::cap: drop = lowerSafe >= std::min(best_ - roundoff_, options_.cap); break;
+    case QueryMode::cap: drop = lowerSafe >= std::min(exactDropFrom(), options_.cap); break;
   }
   if (drop) minSkippedLower_ = std::min(minSkippedLower_, lowerSafe);
   return drop;

@@ -61,6 +61,7 @@ Mesh::Mesh(std::vector<Vec3> vertices, std::vector<TriangleIndices> triangles, s
 void Mesh::refreshVertexFacts() {
   maxAbsCoordinate_ = 0.0;
   for (const Vec3& v : vertices_) maxAbsCoordinate_ = std::max(maxAbsCoordinate_, v.cwiseAbs().maxCoeff());
+  diagonal_ = bounds().diagonal().norm();
 }
 
 void Mesh::setVertices(const std::vector<Vec3>& vertices) {

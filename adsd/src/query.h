@@ -193,6 +193,15 @@ class Query {
   /// May a pair (of sub-meshes or triangles) whose distance is at least `lowerSafe` be dropped?
   /// Records the bound when it is (for the result's interval).
   bool skip(double lowerSafe);
+  /// Exact and capped queries: a pair whose true distance is proven at least this cannot change
+  /// the answer beyond the accuracy promised: the best less the roundoff allowance and, once the
+  /// best is clear of contact by a few of those, the tie slack (tolerance::kTieSlack). Near 0 the
+  /// rule stays the roundoff's alone: pairs of coincident meshes whose bounds round a little above
+  /// 0 must still be opened, so that they answer 0 (with the slack, 7.9e-17 of the diagonal in the
+  /// stress suite's mesh/coincident family), which a margin of 0 tells from a clearance.
+  double exactDropFrom() const {
+    return best_ - roundoff_ - (best_ > 4.0 * roundoff_ ? tieSlack_ : 0.0);
+  }
   /// The distance below which pairs matter geometrically: the global upper bound of sec. 6.2,
   /// tightened by the threshold or cap where the mode has one.
   double geometricBound() const;
@@ -236,6 +245,7 @@ class Query {
   Eigen::Matrix3d rotationAB_;   // directions from A frame into B frame (transpose)
   double magnitude_ = 0.0;       // largest |coordinate| of either mesh in A's frame
   double roundoff_ = 0.0;        // kBoundSafetyUlps * eps * magnitude_
+  double tieSlack_ = 0.0;        // roundoff_, at most kTieSlack * the larger mesh's diagonal (exactDropFrom)
 
   // The global upper bound (sec. 6.2) and where it is attained (A frame).
   double best_ = std::numeric_limits<double>::infinity();

@@ -176,14 +176,14 @@ double Query::pruneBound() const {
   switch (options_.mode) {
     case QueryMode::threshold: return options_.threshold;
     // Exact, and capped below the cap: skip()'s allowance, a pair at most the roundoff allowance
-    // nearer than the best cannot change the answer beyond the promised accuracy.
-    case QueryMode::cap: return std::min(best_ - roundoff_, options_.cap);
+    // and the tie slack nearer than the best cannot change the answer beyond the promised accuracy.
+    case QueryMode::cap: return std::min(exactDropFrom(), options_.cap);
     case QueryMode::tolerance:
       // skip()'s rule solved for the pair's lower bound L: L + max(abs, rel L) >= best.
       return std::max(0.0, std::min(best_ - options_.absTolerance, best_ / (1.0 + options_.relTolerance)));
     case QueryMode::exact: break;
   }
-  return best_ - roundoff_;
+  return exactDropFrom();
 }
 
 bool Query::rootSpheresApart(DistanceResult& out) const {

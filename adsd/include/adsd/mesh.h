@@ -61,6 +61,8 @@ class Mesh {
 
   /// \brief Largest |coordinate| of any vertex (mesh frame): the magnitude that scales roundoff.
   double maxAbsCoordinate() const { return maxAbsCoordinate_; }
+  /// \brief The length of bounds()' diagonal, kept: the length the accuracy promised is relative to.
+  double diagonal() const { return diagonal_; }
   /// \brief Whether every vertex belongs to some triangle, so that a support mapping over the
   /// whole mesh may scan the vertex array (each vertex once) instead of the triangles' corners.
   bool allVerticesReferenced() const { return allVerticesReferenced_; }
@@ -72,6 +74,7 @@ class Mesh {
   std::vector<TriangleIndices> triangles_;
   std::string name_;
   double maxAbsCoordinate_ = 0.0;
+  double diagonal_ = 0.0;
   bool allVerticesReferenced_ = false;
   // Shared between copies of a mesh (it is immutable); setVertices gives the mesh its own.
   std::shared_ptr<const MeshHierarchy> hierarchy_;
