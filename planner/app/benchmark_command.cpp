@@ -70,6 +70,7 @@
 #include "adsd/planner/problem_file.h"
 #include "adsd/planner/shipped_problems.h"
 #include "commands.h"
+#include "planner_watchdog.h"
 #include "spooled_benchmark_log.h"
 
 namespace adsd::app {
@@ -787,17 +788,29 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
   const std::vector<PlannerEntry>& entries = input.planners;
   unsigned currentRun = 0;
   std::unique_ptr<ProgressBar> progress;
+  // Armed for each run: OMPL's Benchmark waits for ever on a planner that never tests its time
+  // limit (PlannerWatchdog).
+  std::optional<PlannerWatchdog> watchdog;
+  const double maxTime = request.maxTime;
   for (const std::unique_ptr<Combination>& c : combinations) {
     Combination* self = c.get();
-    c->benchmark->setPreRunEvent([self, &currentRun, &progress, runCount](const ob::PlannerPtr& planner) {
-      // Benchmark has just reset the discrete validator's counters; ours are reset here.
-      self->problem->resetCounts();
-      self->atSolveEnd = RunQueries{};
-      progress->starting("run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount) + "  " +
-                         planner->getName());
-    });
+    c->benchmark->setPreRunEvent(
+        [self, &currentRun, &progress, &watchdog, runCount, maxTime](const ob::PlannerPtr& planner) {
+          // Benchmark has just reset the discrete validator's counters; ours are reset here.
+          self->problem->resetCounts();
+          self->atSolveEnd = RunQueries{};
+          const std::string run = "run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount);
+          progress->starting(run + "  " + planner->getName());
+          std::ostringstream limit;
+          limit << maxTime;
+          watchdog.emplace("adsd benchmark: error: planner " + planner->getName() + " did not stop at its time limit of " +
+                               limit.str() + " s in " + run + " (an OMPL planner stops only where it tests the limit, "
+                               "and this one did not); no log written",
+                           maxTime, 1);
+        });
     c->benchmark->setPostRunEvent(
-        [self, &currentRun, &progress, firstRun](const ob::PlannerPtr&, ot::Benchmark::RunProperties& run) {
+        [self, &currentRun, &progress, &watchdog, firstRun](const ob::PlannerPtr&, ot::Benchmark::RunProperties& run) {
+          watchdog.reset();
           addRunProperties(*self, firstRun + currentRun, run);
           progress->finished();
         });

@@ -37,6 +37,7 @@
 #include "arm_path_samples.h"
 #include "arm_viewer_html.h"
 #include "commands.h"
+#include "planner_watchdog.h"
 #include "viewer_html.h"
 
 namespace adsd::app {
@@ -211,20 +212,32 @@ struct SolveReport {
 };
 
 /// Solves \p ss within \p seconds, reads \p checker's counts when the planner returns (the
-/// planner's own queries), then simplifies a solution unless told not to.
+/// planner's own queries), then simplifies a solution unless told not to. A planner or simplifier
+/// that runs far past the limit ends the program (PlannerWatchdog), naming \p planner.
 template <class Checker>
-SolveReport solveAndSimplify(ompl::geometric::SimpleSetup& ss, const Checker& checker, double seconds, bool simplify,
-                             const std::function<void()>& atSolveEnd) {
+SolveReport solveAndSimplify(ompl::geometric::SimpleSetup& ss, const Checker& checker, const std::string& planner,
+                             double seconds, bool simplify, const std::function<void()>& atSolveEnd) {
   SolveReport r;
   ss.setup();
   const ompl::time::point started = ompl::time::now();
-  r.status = ss.solve(seconds);
+  {
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", seconds);
+    const PlannerWatchdog watchdog("adsd plan: error: planner " + planner + " did not stop at its time limit of " +
+                                       limit + " s (an OMPL planner stops only where it tests the limit, and " +
+                                       planner + " did not); no path written",
+                                   seconds, 1);
+    r.status = ss.solve(seconds);
+  }
   r.planningSeconds = ompl::time::seconds(ompl::time::now() - started);
   r.solved = r.status == ompl::base::PlannerStatus::EXACT_SOLUTION;
   r.counts = checker.counts();
   atSolveEnd();
   if (r.solved && simplify) {
     const ompl::time::point s = ompl::time::now();
+    const PlannerWatchdog watchdog("adsd plan: error: OMPL's path simplifier did not stop at its time limit; no path "
+                                   "written",
+                                   seconds, 1);
     ss.simplifySolution(seconds);
     r.simplifySeconds = ompl::time::seconds(ompl::time::now() - s);
   }
@@ -303,7 +316,7 @@ int planArm(const PlanArguments& a) {
   ArmMotionCounts certified;
   std::uint64_t discreteMotions = 0, costedMotions = 0, costStates = 0;
   const bool simplify = simplifies(a, problem.objective());
-  const SolveReport r = solveAndSimplify(ss, *problem.checker(), seconds, simplify, [&] {
+  const SolveReport r = solveAndSimplify(ss, *problem.checker(), plannerName, seconds, simplify, [&] {
     if (const auto& objective = problem.objectiveClearance()) {
       costedMotions = objective->motions();
       costStates = objective->statesQueried();
@@ -398,7 +411,7 @@ int plan(const std::vector<std::string>& args) {
 
   MotionCounts motionCounts;
   const bool simplify = simplifies(a, problem.objective());
-  const SolveReport r = solveAndSimplify(ss, *problem.checker(), seconds, simplify, [&] {
+  const SolveReport r = solveAndSimplify(ss, *problem.checker(), plannerName, seconds, simplify, [&] {
     if (problem.certifiedValidator()) motionCounts = problem.certifiedValidator()->counts();
   });
 
