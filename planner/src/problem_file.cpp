@@ -25,6 +25,7 @@
 #include "decimal_number.h"
 #include "input_file.h"
 #include "adsd/planner/planner_registry.h"
+#include "adsd/planner/shipped_problems.h"
 
 namespace adsd::planner {
 
@@ -712,9 +713,28 @@ ProblemFile parseProblemFile(std::istream& in, const std::string& sourceName, co
   return file;
 }
 
+namespace {
+
+/// For a bare file name that is not here but is one of the shipped problems: where that one is.
+/// The README's `adsd plan office.cfg`, run outside the problems' directory, said only that the
+/// file does not exist (an outside review).
+std::string shippedProblemHint(const std::string& path) {
+  if (fs::path(path).has_parent_path()) return "";
+  try {
+    const fs::path shipped = fs::path(shippedProblemsDirectory()) / path;
+    std::error_code ec;
+    if (fs::is_regular_file(shipped, ec)) return " here; the shipped problem of that name is " + shipped.string();
+  } catch (const InputError&) {
+    // No data directory (a program linking the library): nothing to point to.
+  }
+  return "";
+}
+
+}  // namespace
+
 ProblemFile readProblemFile(const std::string& path) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": problem file does not exist");
+  if (!fs::exists(path, ec)) throw InputError(path + ": problem file does not exist" + shippedProblemHint(path));
   if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a problem file");
   // Read line by line: /dev/zero is one line without end, which filled the memory.
   if (!fs::is_regular_file(path, ec)) throw InputError(path + ": is a device, a pipe or a socket, not a problem file");

@@ -20,6 +20,7 @@ problem file names, and inputs without end (/dev/zero), are refused, and so are 
 steps over the thin wall. Past a file-size limit (ulimit -f), a page, a report and the standard
 output are failures said in one line (exit status 2 or 1), not a silent kill leaving a .partial.
 The seed `adsd plan` prints when OMPL chose it, given back with --seed, plans the same path.
+A shipped problem's bare name where no such file is says where the shipped one is.
 """
 import math
 import os
@@ -272,6 +273,13 @@ def main():
                 r = subprocess.run([adsd] + args, stdout=full, stderr=subprocess.PIPE, text=True, timeout=60)
                 check(r.returncode == 1 and r.stderr.endswith("error: cannot write the standard output\n"),
                       f"{' '.join(args)} into a full disk: exit {r.returncode}, stderr {r.stderr!r}")
+        # A shipped problem's bare name, run where it is not (the README's `adsd plan office.cfg`
+        # outside the problems' directory): refused, pointing to the shipped one.
+        for command in (["plan"], ["view", "--html", os.path.join(work, "bare.html")], ["benchmark"]):
+            r = run(adsd, [command[0], "office.cfg"] + command[1:], work)
+            shipped = r.stderr.strip().rsplit(" ", 1)[-1]
+            check(r.returncode == 2 and "the shipped problem of that name is" in r.stderr and os.path.isfile(shipped),
+                  f"{command[0]} office.cfg outside its directory: exit {r.returncode}, stderr {r.stderr!r}")
     for f in failures:
         print("FAIL:", f)
     print(f"{len(failures)} failure(s)")
