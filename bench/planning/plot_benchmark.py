@@ -79,6 +79,13 @@ class Group:
     def solved(self):
         return sum(1 for r in self.runs if r.get("solved"))
 
+    def solved_in_contact(self):
+        """Solved runs whose path comes within the margin (adsd benchmark's "path in contact": a
+        discrete validator's path that stepped over an obstacle); "–" for a log without the column."""
+        if not any(r.get("path_in_contact") is not None for r in self.runs):
+            return "–"
+        return "%d" % sum(1 for r in self.runs if r.get("solved") and r.get("path_in_contact"))
+
     def pooled_mean(self, seconds_column, count_column):
         """Total time over total count: each query weighs the same, whatever run it was in."""
         seconds, count = sum(self.values(seconds_column)), sum(self.values(count_column))
@@ -140,17 +147,17 @@ def summary(groups):
     for problem in dict.fromkeys(g.problem for g in groups):
         members = [g for g in groups if g.problem == problem]
         lines += ["## %s" % problem, "",
-                  "| planner | checker | motion | runs | solved | median time (s) | "
+                  "| planner | checker | motion | runs | solved | solved, path in contact | median time (s) | "
                   "median clearance (mean over the path's states) | "
                   "median validity checks | mean validity check (µs) | median clearance queries | "
                   "mean clearance query (µs) | median query time fraction |",
-                  "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+                  "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
         for g in members:
             validity = g.pooled_mean("validity_check_time", "validity_checks")
             clearance = g.pooled_mean("clearance_query_time", "clearance_queries")
-            lines.append("| %s | %s | %s | %d | %d (%.0f %%) | %s | %s | %s | %s | %s | %s | %s |" % (
+            lines.append("| %s | %s | %s | %d | %d (%.0f %%) | %s | %s | %s | %s | %s | %s | %s | %s |" % (
                 cell(g.label), g.checker or "–", g.motion or "–", len(g.runs), g.solved(),
-                100.0 * g.solved() / len(g.runs), fmt(median(g.values("time"))),
+                100.0 * g.solved() / len(g.runs), g.solved_in_contact(), fmt(median(g.values("time"))),
                 fmt(median(g.values(g.clearance_column(), solved_only=True))),
                 count(median(g.values("validity_checks"))),
                 fmt(validity * MICROSECONDS if validity is not None else None),

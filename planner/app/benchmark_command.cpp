@@ -57,6 +57,7 @@
 #include <vector>
 
 #include <ompl/base/Planner.h>
+#include <ompl/geometric/PathGeometric.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
@@ -65,6 +66,7 @@
 #include "adsd/error.h"
 #include "adsd/planner/arm_planning_problem.h"
 #include "adsd/planner/motion_plan_request_yaml.h"
+#include "adsd/planner/path_report.h"
 #include "adsd/planner/planner_registry.h"
 #include "adsd/planner/planning_problem.h"
 #include "adsd/planner/problem_file.h"
@@ -314,7 +316,18 @@ class BenchmarkedProblem {
   /// \brief The certified validator's counts, or nullopt when OMPL's discrete validator is in use.
   virtual std::optional<CertifiedCounts> certified() const = 0;
   virtual const std::vector<std::string>& warnings() const = 0;
+  /// \brief The least clearance of \p path as `adsd plan` measures it (a rigid body's between its
+  /// states too, leastClearanceAlong; an arm's at its measured states), and the checker's margin.
+  virtual std::pair<double, double> leastClearanceOf(const ompl::geometric::PathGeometric& path) const = 0;
 };
+
+/// What `adsd plan` measures of a path, by problem type.
+double leastClearanceOf(const PlanningProblem& problem, const ompl::geometric::PathGeometric& path) {
+  return leastClearanceAlong(path, *problem.checker()).least;
+}
+double leastClearanceOf(const ArmPlanningProblem& problem, const ompl::geometric::PathGeometric& path) {
+  return measurePath(path, *problem.checker()).minClearance;
+}
 
 /// BenchmarkedProblem over either problem type (both have the same members; only their motion
 /// counts' types differ, which certifiedCounts() reconciles).
@@ -335,6 +348,9 @@ class BenchmarkedProblemOf final : public BenchmarkedProblem {
     return std::nullopt;
   }
   const std::vector<std::string>& warnings() const override { return problem_.warnings(); }
+  std::pair<double, double> leastClearanceOf(const ompl::geometric::PathGeometric& path) const override {
+    return {app::leastClearanceOf(problem_, path), problem_.checker()->safetyMargin()};
+  }
 
  private:
   Problem problem_;
@@ -419,6 +435,22 @@ void addRunProperties(const Combination& c, unsigned runIndex, ot::Benchmark::Ru
       run["query time fraction REAL"] = real((q.validitySeconds + q.clearanceSeconds) / planningSeconds);
     }
   }
+}
+
+/// Whether the run's path comes within the checker's safety margin, as `adsd plan` measures it: OMPL
+/// counts a discrete validator's path that steps over a thin obstacle as solved (`solved`,
+/// `correct_solution`), and an outside review found 5 of 8 such paths colliding on one problem
+/// with nothing in the log to tell. "path least clearance" is measured after the run, outside
+/// its times and query counts (captured when solve returned); "path in contact" is 1 when it is
+/// at or below the margin. Runs without a path have neither.
+void addPathContact(const Combination& c, const ob::Planner& planner, ot::Benchmark::RunProperties& run) {
+  const ob::ProblemDefinitionPtr& definition = planner.getProblemDefinition();
+  if (!definition || !definition->hasSolution()) return;
+  const auto path = std::dynamic_pointer_cast<ompl::geometric::PathGeometric>(definition->getSolutionPath());
+  if (!path || path->getStateCount() == 0) return;
+  const auto [least, margin] = c.problem->leastClearanceOf(*path);
+  run["path least clearance REAL"] = real(least);
+  run["path in contact BOOLEAN"] = least <= margin ? "1" : "0";
 }
 
 // ---- progress ----------------------------------------------------------------------------------
@@ -808,12 +840,13 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
                                "and this one did not); no log written",
                            maxTime, 1);
         });
-    c->benchmark->setPostRunEvent(
-        [self, &currentRun, &progress, &watchdog, firstRun](const ob::PlannerPtr&, ot::Benchmark::RunProperties& run) {
-          watchdog.reset();
-          addRunProperties(*self, firstRun + currentRun, run);
-          progress->finished();
-        });
+    c->benchmark->setPostRunEvent([self, &currentRun, &progress, &watchdog, firstRun](
+                                      const ob::PlannerPtr& planner, ot::Benchmark::RunProperties& run) {
+      watchdog.reset();
+      addRunProperties(*self, firstRun + currentRun, run);
+      addPathContact(*self, *planner, run);
+      progress->finished();
+    });
   }
 
   const auto [directory, stem] = outputNames(a, input);

@@ -35,6 +35,8 @@ OUR_COLUMNS = {
     "motions_rejected": "INTEGER",
     "certified_clearance_steps": "INTEGER",
     "query_time_fraction": "REAL",
+    "path_least_clearance": "REAL",
+    "path_in_contact": "BOOLEAN",
 }
 OMPL_COLUMNS = {"time": "REAL", "solved": "BOOLEAN", "solution_clearance": "REAL", "valid_segment_fraction": "REAL"}
 COMBINATIONS = [("adsd", "discrete"), ("adsd", "certified"), ("fcl", "discrete"), ("fcl", "certified")]
@@ -210,6 +212,13 @@ def full_run(adsd, cfg, work):
             # Every state of a valid path is farther than the safety margin (0) from the obstacles.
             check(r["solution_clearance"] is not None and r["solution_clearance"] > 0,
                   where + ": solved, but solution clearance %r" % r["solution_clearance"])
+            # Between its states too, as adsd plan measures it: a discrete path may step over the
+            # wall (in contact), a certified one never.
+            check(r["path_least_clearance"] is not None and
+                  r["path_in_contact"] == (1 if r["path_least_clearance"] <= 0 else 0),
+                  "%s: path least clearance %r, in contact %r" % (where, r["path_least_clearance"], r["path_in_contact"]))
+            if motion == "certified":
+                check(r["path_in_contact"] == 0, where + ": a certified path in contact")
         check(r["query_time_fraction"] is not None and r["query_time_fraction"] > 0,
               where + ": no query time fraction")
         # The planner's own solve lies inside OMPL's timing of it, and RRTConnect's queries (one
