@@ -1,6 +1,7 @@
 #include "adsd/mesh.h"
 
 #include <algorithm>
+#include <utility>
 #include <charconv>
 #include <cmath>
 #include <iomanip>
@@ -70,12 +71,20 @@ void Mesh::setVertices(const std::vector<Vec3>& vertices) {
                      " vertices, the mesh has " + std::to_string(vertices_.size()));
   }
   requireRepresentable(vertices, name_);
-  vertices_ = vertices;
+  // The old positions come back if the refit fails (it allocates): new vertices under the old
+  // tree's boxes would be answered wrongly, without a word.
+  std::vector<Vec3> previous = std::exchange(vertices_, vertices);
   refreshVertexFacts();
   if (hierarchy_) {
-    auto refitted = std::make_shared<MeshHierarchy>(*hierarchy_);
-    refitted->refit(*this);
-    hierarchy_ = std::move(refitted);
+    try {
+      auto refitted = std::make_shared<MeshHierarchy>(*hierarchy_);
+      refitted->refit(*this);
+      hierarchy_ = std::move(refitted);
+    } catch (...) {
+      vertices_ = std::move(previous);
+      refreshVertexFacts();
+      throw;
+    }
   }
 }
 

@@ -229,9 +229,11 @@ const char* name(MotionKind k) { return k == MotionKind::discrete ? "discrete" :
 /// progress properties.
 class MeasuredPlanner final : public ob::Planner {
  public:
-  MeasuredPlanner(ob::PlannerPtr planner, const std::string& label, std::function<void(double)> atSolveEnd)
+  MeasuredPlanner(ob::PlannerPtr planner, const std::string& label, double timeLimit,
+                  std::function<void(double)> atSolveEnd)
       : ob::Planner(planner->getSpaceInformation(), label),
         planner_(std::move(planner)),
+        timeLimit_(timeLimit),
         atSolveEnd_(std::move(atSolveEnd)) {
     specs_ = planner_->getSpecs();
     params_.include(planner_->params());
@@ -248,6 +250,15 @@ class MeasuredPlanner final : public ob::Planner {
       std::chrono::steady_clock::time_point started;
       ~AtExit() { call(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()); }
     } atExit{atSolveEnd_, std::chrono::steady_clock::now()};
+    // Around the planner's solve alone: OMPL's Benchmark waits for ever on a planner that never
+    // tests its time limit, and what it does after solve (checking and simplifying the path, with
+    // no limit) is not the planner's. The line starts afresh after the progress bar's.
+    std::ostringstream limit;
+    limit << timeLimit_;
+    const PlannerWatchdog watchdog("\nadsd benchmark: error: planner " + getName() + " did not stop at its time limit "
+                                   "of " + limit.str() + " s (an OMPL planner stops only where it tests the limit, "
+                                   "and this one did not); this problem's log is not written",
+                                   timeLimit_, 1);
     return planner_->solve(ptc);
   }
   void setProblemDefinition(const ob::ProblemDefinitionPtr& pdef) override {
@@ -276,6 +287,7 @@ class MeasuredPlanner final : public ob::Planner {
 
  private:
   ob::PlannerPtr planner_;
+  double timeLimit_;
   std::function<void(double)> atSolveEnd_;
 };
 
@@ -785,7 +797,8 @@ std::vector<std::unique_ptr<Combination>> buildCombinations(const BenchmarkArgum
         }
         const std::string label = name + " [" + c->label() + "]";
         c->benchmark->addPlanner(
-            std::make_shared<MeasuredPlanner>(planner, label, [self](double seconds) { captureQueries(*self, seconds); }));
+            std::make_shared<MeasuredPlanner>(planner, label, input.request.maxTime,
+                                              [self](double seconds) { captureQueries(*self, seconds); }));
       }
       combinations.push_back(std::move(c));
     }
@@ -820,29 +833,17 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
   const std::vector<PlannerEntry>& entries = input.planners;
   unsigned currentRun = 0;
   std::unique_ptr<ProgressBar> progress;
-  // Armed for each run: OMPL's Benchmark waits for ever on a planner that never tests its time
-  // limit (PlannerWatchdog).
-  std::optional<PlannerWatchdog> watchdog;
-  const double maxTime = request.maxTime;
   for (const std::unique_ptr<Combination>& c : combinations) {
     Combination* self = c.get();
-    c->benchmark->setPreRunEvent(
-        [self, &currentRun, &progress, &watchdog, runCount, maxTime](const ob::PlannerPtr& planner) {
-          // Benchmark has just reset the discrete validator's counters; ours are reset here.
-          self->problem->resetCounts();
-          self->atSolveEnd = RunQueries{};
-          const std::string run = "run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount);
-          progress->starting(run + "  " + planner->getName());
-          std::ostringstream limit;
-          limit << maxTime;
-          watchdog.emplace("adsd benchmark: error: planner " + planner->getName() + " did not stop at its time limit of " +
-                               limit.str() + " s in " + run + " (an OMPL planner stops only where it tests the limit, "
-                               "and this one did not); no log written",
-                           maxTime, 1);
-        });
-    c->benchmark->setPostRunEvent([self, &currentRun, &progress, &watchdog, firstRun](
-                                      const ob::PlannerPtr& planner, ot::Benchmark::RunProperties& run) {
-      watchdog.reset();
+    c->benchmark->setPreRunEvent([self, &currentRun, &progress, runCount](const ob::PlannerPtr& planner) {
+      // Benchmark has just reset the discrete validator's counters; ours are reset here.
+      self->problem->resetCounts();
+      self->atSolveEnd = RunQueries{};
+      progress->starting("run " + std::to_string(currentRun + 1) + "/" + std::to_string(runCount) + "  " +
+                         planner->getName());
+    });
+    c->benchmark->setPostRunEvent([self, &currentRun, &progress, firstRun](const ob::PlannerPtr& planner,
+                                                                          ot::Benchmark::RunProperties& run) {
       addRunProperties(*self, firstRun + currentRun, run);
       addPathContact(*self, *planner, run);
       progress->finished();

@@ -212,8 +212,9 @@ struct SolveReport {
 };
 
 /// Solves \p ss within \p seconds, reads \p checker's counts when the planner returns (the
-/// planner's own queries), then simplifies a solution unless told not to. A planner or simplifier
-/// that runs far past the limit ends the program (PlannerWatchdog), naming \p planner.
+/// planner's own queries), then simplifies a solution unless told not to. A planner that runs far
+/// past the limit ends the program (PlannerWatchdog), naming \p planner; the simplifier may finish
+/// the step under way past it (the help says so), and is left to.
 template <class Checker>
 SolveReport solveAndSimplify(ompl::geometric::SimpleSetup& ss, const Checker& checker, const std::string& planner,
                              double seconds, bool simplify, const std::function<void()>& atSolveEnd) {
@@ -235,9 +236,6 @@ SolveReport solveAndSimplify(ompl::geometric::SimpleSetup& ss, const Checker& ch
   atSolveEnd();
   if (r.solved && simplify) {
     const ompl::time::point s = ompl::time::now();
-    const PlannerWatchdog watchdog("adsd plan: error: OMPL's path simplifier did not stop at its time limit; no path "
-                                   "written",
-                                   seconds, 1);
     ss.simplifySolution(seconds);
     r.simplifySeconds = ompl::time::seconds(ompl::time::now() - s);
   }
@@ -277,7 +275,8 @@ int reportAlong(const PathLeastClearance& along, double safetyMargin, const ompl
   std::printf("unproven    no state found within the safety margin (%g), but %zu clearance queries did not prove "
               "every state between the measured ones beyond it%s\n",
               safetyMargin, along.queries,
-              certified ? " (the certified motion validator proved each motion)" : "; --motion certified proves every motion");
+              certified ? " (the certified motion validator proved each motion)"
+                        : "; --motion certified proves every motion");
   return certified ? 0 : 1;
 }
 

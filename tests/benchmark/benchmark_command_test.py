@@ -216,7 +216,8 @@ def full_run(adsd, cfg, work):
             # wall (in contact), a certified one never.
             check(r["path_least_clearance"] is not None and
                   r["path_in_contact"] == (1 if r["path_least_clearance"] <= 0 else 0),
-                  "%s: path least clearance %r, in contact %r" % (where, r["path_least_clearance"], r["path_in_contact"]))
+                  "%s: path least clearance %r, in contact %r"
+                  % (where, r["path_least_clearance"], r["path_in_contact"]))
             if motion == "certified":
                 check(r["path_in_contact"] == 0, where + ": a certified path in contact")
         check(r["query_time_fraction"] is not None and r["query_time_fraction"] > 0,

@@ -61,7 +61,8 @@ class Mesh {
 
   /// \brief Largest |coordinate| of any vertex (mesh frame): the magnitude that scales roundoff.
   double maxAbsCoordinate() const { return maxAbsCoordinate_; }
-  /// \brief The length of bounds()' diagonal, kept: the length the accuracy promised is relative to.
+  /// \brief The length of bounds()' diagonal, kept: queries scale their tie slack by it
+  /// (tolerance::kTieSlack); at most sqrt(3) times the diagonal of a scene holding the mesh.
   double diagonal() const { return diagonal_; }
   /// \brief Whether every vertex belongs to some triangle, so that a support mapping over the
   /// whole mesh may scan the vertex array (each vertex once) instead of the triangles' corners.
