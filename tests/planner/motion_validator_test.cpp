@@ -227,6 +227,42 @@ TEST(LeastClearanceAlong, FindsTheWallADiscretePathStepsOverAndTheLeastOverTheTo
               along.queries, top.least, top.lowerBound, top.queries, dense);
 }
 
+// A motion that leaves a wall its start is flush against (1e-9 of the scene away) is certified:
+// its first steps are below kMinimumStepFraction, and each one's spare clearance grows by a
+// factor, so they are taken until the steps are long again. Every such step was a rejection
+// before, and certified planning from a flush start never solved (an outside review). A motion
+// that slides along the wall at that distance is still rejected, and the oracle finds no
+// collision on what is accepted.
+TEST(CertifiedMotion, AMotionLeavingAWallItStartsFlushAgainstIsCertified) {
+  SceneFixture f = test::thinWallFixture();
+  auto checker = std::make_shared<MeshValidityChecker>(f.si, f.scene);
+  f.si->setStateValidityChecker(checker);
+  f.si->setup();
+  ob::ScopedState<ob::SE2StateSpace> start(f.si), goal(f.si), flush(f.si), away(f.si), along(f.si), s(f.si);
+  thinWallEnds(f, start, goal);
+  double clearT = 0.0, blockedT = 2.03 / 4.0;  // at x = 0, in the wall
+  for (int i = 0; i < 200 && blockedT - clearT > 1e-9; ++i) {
+    const double t = 0.5 * (clearT + blockedT);
+    f.si->getStateSpace()->interpolate(start.get(), goal.get(), t, flush.get());
+    (checker->isValid(flush.get()) ? clearT : blockedT) = t;
+  }
+  f.si->getStateSpace()->interpolate(start.get(), goal.get(), clearT, flush.get());
+  const double flushClearance = checker->clearance(flush.get());
+  ASSERT_GT(flushClearance, 0.0);
+  ASSERT_LT(flushClearance, 1e-8 * checker->scale());
+  away->setXY(flush->getX() - 1.0, flush->getY() + 1.0);
+  away->setYaw(0.0);
+  CertifiedMotionValidator certified(f.si, checker);
+  EXPECT_TRUE(certified.checkMotion(flush.get(), away.get())) << "leaving the wall at 45 degrees";
+  for (int i = 0; i <= 400; ++i) {
+    f.si->getStateSpace()->interpolate(flush.get(), away.get(), i / 400.0, s.get());
+    EXPECT_FALSE(oracleCollides(f, s.get())) << "at " << i / 400.0;
+  }
+  along->setXY(flush->getX(), flush->getY() - 0.5);
+  along->setYaw(0.0);
+  EXPECT_FALSE(certified.checkMotion(flush.get(), along.get())) << "sliding along the wall 1e-9 from it";
+}
+
 // A path whose first state nearly touches the wall, then crosses it: the least clearance measured
 // (at that state) is below the tolerance's floor (a millionth of the scene), so a search that
 // stopped once the least was within tolerance stopped at once, with the crossing's intervals
