@@ -129,7 +129,9 @@ struct DistanceResult {
 /// It also remembers, per mesh pair (by address), the triangles of the last answer: the next
 /// query between the same meshes measures them first, which gives it an upper bound close to the
 /// answer when the poses moved little (a planner's consecutive checks). The hint only changes how
-/// fast the answer is proven, never the answer.
+/// fast the answer is proven, never the answer beyond rounding (meshes that meet only at rounding
+/// level, a shared face of two rotated boxes, answered 2e-19 from a fresh scratch and 0 from a
+/// warm one in an outside review: both within the accuracy promised above).
 class DistanceScratch {
  public:
   DistanceScratch();
