@@ -43,6 +43,22 @@ void thinWallEnds(const SceneFixture& f, ob::ScopedState<ob::SE2StateSpace>& sta
   (void)f;
 }
 
+/// The last state before the wall on the straight crossing from thin_wall.cfg's start to its goal,
+/// found by halving the motion parameter down to \p resolution: clear of the wall by about
+/// \p resolution times the motion's length (4).
+void lastStateBeforeTheWall(const SceneFixture& f, const ob::StateValidityChecker& checker, double resolution,
+                            ob::ScopedState<ob::SE2StateSpace>& out) {
+  ob::ScopedState<ob::SE2StateSpace> start(f.si), goal(f.si);
+  thinWallEnds(f, start, goal);
+  double clearT = 0.0, blockedT = 2.03 / 4.0;  // at x = 0, in the wall
+  for (int i = 0; i < 200 && blockedT - clearT > resolution; ++i) {
+    const double t = 0.5 * (clearT + blockedT);
+    f.si->getStateSpace()->interpolate(start.get(), goal.get(), t, out.get());
+    (checker.isValid(out.get()) ? clearT : blockedT) = t;
+  }
+  f.si->getStateSpace()->interpolate(start.get(), goal.get(), clearT, out.get());
+}
+
 template <class Checker>
 void thinWallCrossing(const char* label) {
   SceneFixture f = test::thinWallFixture();
@@ -238,15 +254,8 @@ TEST(CertifiedMotion, AMotionLeavingAWallItStartsFlushAgainstIsCertified) {
   auto checker = std::make_shared<MeshValidityChecker>(f.si, f.scene);
   f.si->setStateValidityChecker(checker);
   f.si->setup();
-  ob::ScopedState<ob::SE2StateSpace> start(f.si), goal(f.si), flush(f.si), away(f.si), along(f.si), s(f.si);
-  thinWallEnds(f, start, goal);
-  double clearT = 0.0, blockedT = 2.03 / 4.0;  // at x = 0, in the wall
-  for (int i = 0; i < 200 && blockedT - clearT > 1e-9; ++i) {
-    const double t = 0.5 * (clearT + blockedT);
-    f.si->getStateSpace()->interpolate(start.get(), goal.get(), t, flush.get());
-    (checker->isValid(flush.get()) ? clearT : blockedT) = t;
-  }
-  f.si->getStateSpace()->interpolate(start.get(), goal.get(), clearT, flush.get());
+  ob::ScopedState<ob::SE2StateSpace> flush(f.si), away(f.si), along(f.si), s(f.si);
+  lastStateBeforeTheWall(f, *checker, 1e-9, flush);
   const double flushClearance = checker->clearance(flush.get());
   ASSERT_GT(flushClearance, 0.0);
   ASSERT_LT(flushClearance, 1e-8 * checker->scale());
@@ -275,17 +284,11 @@ TEST(LeastClearanceAlong, AStateNearlyTouchingDoesNotHideACrossingAfterIt) {
   f.si->setup();
   ob::ScopedState<ob::SE2StateSpace> start(f.si), goal(f.si), near(f.si);
   thinWallEnds(f, start, goal);
-  // Along the crossing, the last state before the wall, found by halving: clear by less than a
-  // ten-millionth of the scene.
-  double clearT = 0.0, blockedT = 2.03 / 4.0;  // at x = 0, in the wall
-  f.si->getStateSpace()->interpolate(start.get(), goal.get(), blockedT, near.get());
+  // Along the crossing, the last state before the wall: clear by less than a ten-millionth of
+  // the scene.
+  f.si->getStateSpace()->interpolate(start.get(), goal.get(), 2.03 / 4.0, near.get());
   ASSERT_FALSE(checker->isValid(near.get())) << "the crossing is in the wall at x = 0";
-  for (int i = 0; i < 200 && blockedT - clearT > 1e-8; ++i) {
-    const double t = 0.5 * (clearT + blockedT);
-    f.si->getStateSpace()->interpolate(start.get(), goal.get(), t, near.get());
-    (checker->isValid(near.get()) ? clearT : blockedT) = t;
-  }
-  f.si->getStateSpace()->interpolate(start.get(), goal.get(), clearT, near.get());
+  lastStateBeforeTheWall(f, *checker, 1e-8, near);
   const double nearClearance = checker->clearance(near.get());
   ASSERT_GT(nearClearance, 0.0);
   ASSERT_LT(nearClearance, 1e-7 * checker->scale());
