@@ -1,11 +1,11 @@
 #include "adsd/mesh.h"
 
 #include <algorithm>
-#include <utility>
 #include <charconv>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <utility>
 
 #include "adsd/error.h"
 #include "adsd/mesh_hierarchy.h"
