@@ -173,8 +173,11 @@ bool Query::skip(double lowerSafe) {
     case QueryMode::exact: drop = lowerSafe >= exactDropFrom(); break;
     case QueryMode::tolerance:
       // Slack measured on the pair's own lower bound, not on the running best: the running best
-      // only falls, and the interval's width must hold for the final one.
-      drop = lowerSafe + std::max(options_.absTolerance, options_.relTolerance * std::max(lowerSafe, 0.0)) >= best_;
+      // only falls, and the interval's width must hold for the final one. And never less than an
+      // exact query drops (ties, up to rounding): a tolerance of 0 on 20 000 copies of one
+      // triangle took 69.6 s where the exact query took none (a code review).
+      drop = lowerSafe + std::max(options_.absTolerance, options_.relTolerance * std::max(lowerSafe, 0.0)) >= best_ ||
+             lowerSafe >= exactDropFrom();
       break;
     case QueryMode::threshold: drop = lowerSafe > options_.threshold || lowerSafe >= best_; break;
     case QueryMode::cap: drop = lowerSafe >= std::min(exactDropFrom(), options_.cap); break;

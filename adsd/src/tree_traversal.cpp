@@ -179,8 +179,10 @@ double Query::pruneBound() const {
     // and the tie slack nearer than the best cannot change the answer beyond the promised accuracy.
     case QueryMode::cap: return std::min(exactDropFrom(), options_.cap);
     case QueryMode::tolerance:
-      // skip()'s rule solved for the pair's lower bound L: L + max(abs, rel L) >= best.
-      return std::max(0.0, std::min(best_ - options_.absTolerance, best_ / (1.0 + options_.relTolerance)));
+      // skip()'s rule solved for the pair's lower bound L: L + max(abs, rel L) >= best, or what an
+      // exact query drops, whichever drops more.
+      return std::max(0.0, std::min({best_ - options_.absTolerance, best_ / (1.0 + options_.relTolerance),
+                                     exactDropFrom()}));
     case QueryMode::exact: break;
   }
   return exactDropFrom();
