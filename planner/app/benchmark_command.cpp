@@ -253,12 +253,8 @@ class MeasuredPlanner final : public ob::Planner {
     // Around the planner's solve alone: OMPL's Benchmark waits for ever on a planner that never
     // tests its time limit, and what it does after solve (checking and simplifying the path, with
     // no limit) is not the planner's. The line starts afresh after the progress bar's.
-    std::ostringstream limit;
-    limit << timeLimit_;
-    const PlannerWatchdog watchdog("\nadsd benchmark: error: planner " + getName() + " did not stop at its time limit "
-                                   "of " + limit.str() + " s (an OMPL planner stops only where it tests the limit, "
-                                   "and this one did not); this problem's log is not written",
-                                   timeLimit_, 1);
+    const PlannerWatchdog watchdog("adsd benchmark", getName(), timeLimit_, "this problem's log is not written",
+                                   true);
     return planner_->solve(ptc);
   }
   void setProblemDefinition(const ob::ProblemDefinitionPtr& pdef) override {

@@ -7,13 +7,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
+#include <sstream>
 #include <string>
 #include <thread>
 
 namespace adsd::app {
 
-/// \brief While alive, ends the program with \p exitStatus and one line on standard error if it
-/// is not destroyed within \p limitSeconds plus a grace (as long again, at least 10 s).
+/// \brief While alive, ends the program with exit status 1 and one line on standard error
+/// ("PROGRAM: error: planner PLANNER did not stop at its time limit ...; LOST") if it is not
+/// destroyed within \p limitSeconds plus a grace (as long again, at least 10 s).
 ///
 /// Why: OMPL planners stop at their time limit only where they test it, and some loops never do.
 /// OMPL 1.5.2's BIT* asks its informed sampler for samples until it has them; in an SE(2) problem a
@@ -24,8 +26,15 @@ namespace adsd::app {
 /// are written after planning, through temporary files), and the line names the planner.
 class PlannerWatchdog {
  public:
-  PlannerWatchdog(std::string message, double limitSeconds, int exitStatus)
-      : message_(std::move(message)), exitStatus_(exitStatus) {
+  /// \p program names the command; \p lost says what is not written; \p freshLine starts the line
+  /// afresh (after a progress bar's).
+  PlannerWatchdog(const std::string& program, const std::string& planner, double limitSeconds,
+                  const std::string& lost, bool freshLine = false) {
+    std::ostringstream message;
+    message << (freshLine ? "\n" : "") << program << ": error: planner " << planner
+            << " did not stop at its time limit of " << limitSeconds
+            << " s (an OMPL planner stops only where it tests the limit, and this one did not); " << lost;
+    message_ = message.str();
     const double grace = std::max(10.0, limitSeconds);
     const auto deadline = std::chrono::steady_clock::now() +
                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -36,7 +45,7 @@ class PlannerWatchdog {
       std::fflush(stdout);
       std::fprintf(stderr, "%s (stopped after %.0f s)\n", message_.c_str(), total);
       std::fflush(stderr);
-      std::_Exit(exitStatus_);
+      std::_Exit(1);
     });
   }
   ~PlannerWatchdog() {
@@ -52,7 +61,6 @@ class PlannerWatchdog {
 
  private:
   std::string message_;
-  int exitStatus_;
   std::mutex mutex_;
   std::condition_variable stopped_;
   bool disarmed_ = false;
