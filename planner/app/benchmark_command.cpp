@@ -867,11 +867,12 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
   if (cli::inSystemTree((directory / (stem + ".log")).string())) {
     throw InputError(source + ": '" + directory.string() + "' is in /dev, /proc or /sys, not a directory to write the results in");
   }
-  fs::create_directory(directory, error);
+  const bool made = fs::create_directory(directory, error);
   if (error || !fs::is_directory(directory) || ::access(directory.c_str(), W_OK) != 0) {
     throw InputError(source + ": cannot write in directory '" + directory.string() + "'" +
                      (error ? ": " + error.message() : std::string(" (not a writable directory)")));
   }
+  PlannerWatchdog::outputDirectoryMade(made ? directory : fs::path());  // not an earlier problem's
   const fs::path logPath = directory / (stem + ".log");
   const fs::path databasePath = directory / (stem + ".db");
   // Every file this writes is renamed over its name at the end: a directory there would fail it

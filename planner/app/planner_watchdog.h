@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <mutex>
 #include <sstream>
 #include <string>
@@ -26,6 +27,14 @@ namespace adsd::app {
 /// are written after planning, through temporary files), and the line names the planner.
 class PlannerWatchdog {
  public:
+  /// Tells every watchdog that the program made \p directory for its outputs: a watchdog that ends
+  /// the program removes it if it is still empty, so that a stopped `adsd benchmark --out NEW`
+  /// leaves nothing behind (it makes the directory before the runs: their spools live there).
+  static void outputDirectoryMade(const std::filesystem::path& directory) {
+    std::lock_guard<std::mutex> lock(madeMutex());
+    madeDirectory() = directory;
+  }
+
   /// \p program names the command; \p lost says what is not written; \p freshLine starts the line
   /// afresh (after a progress bar's).
   PlannerWatchdog(const std::string& program, const std::string& planner, double limitSeconds,
@@ -43,6 +52,11 @@ class PlannerWatchdog {
       std::unique_lock<std::mutex> lock(mutex_);
       if (stopped_.wait_until(lock, deadline, [this] { return disarmed_; })) return;
       std::fflush(stdout);
+      {
+        std::lock_guard<std::mutex> made(madeMutex());
+        std::error_code ignored;  // not empty, or gone: left as it is
+        if (!madeDirectory().empty()) std::filesystem::remove(madeDirectory(), ignored);
+      }
       std::fprintf(stderr, "%s (stopped after %.0f s)\n", message_.c_str(), total);
       std::fflush(stderr);
       std::_Exit(1);
@@ -60,6 +74,15 @@ class PlannerWatchdog {
   PlannerWatchdog& operator=(const PlannerWatchdog&) = delete;
 
  private:
+  static std::mutex& madeMutex() {
+    static std::mutex mutex;
+    return mutex;
+  }
+  static std::filesystem::path& madeDirectory() {
+    static std::filesystem::path directory;
+    return directory;
+  }
+
   std::string message_;
   std::mutex mutex_;
   std::condition_variable stopped_;
