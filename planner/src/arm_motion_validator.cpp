@@ -67,11 +67,35 @@ bool ArmMotionValidator::certify(const ob::State* s1, const ob::State* s2, doubl
     double ta, ca, tb, cb;
   };
   std::vector<Segment> stack;
+  ob::State* state = si_->allocState();
+  // Below the floor, a segment [ta, tb] (ta is where the proven part ends: left halves come
+  // first) is crossed by steps from ta, each as long as its start's tau proves alone, while tau
+  // grows by kEscapeGrowth per step (kEscapeSteps per motion at most). The bisection alone never
+  // proves a motion leaving an obstacle its start is flush against: moving away at a speed r < 1
+  // times the bound's, tau(t) = tau(0) + r t, and [0, x] needs x < 2 tau(0) + r x. A start 1e-9
+  // from a wall had every such motion rejected (the rigid validator has the same rule).
+  int escapeSteps = 0;
+  const auto escape = [&](const Segment& s) {
+    if (!(s.cb > 0.0)) return false;  // an invalid end is never proven
+    double t = s.ta, c = s.ca;
+    while (s.tb - t >= c + s.cb) {
+      if (escapeSteps++ >= kEscapeSteps) return false;
+      // [t, t + c] is free (tau(t) = c alone proves it); the next step starts at its end.
+      t += c;
+      si_->getStateSpace()->interpolate(s1, s2, t, state);
+      const double next = tau(state, s.tb - t);
+      if (!(next > 0.0)) return false;
+      lastValidT = t;
+      if (s.tb - t < next + s.cb) return true;
+      if (!(next >= kEscapeGrowth * c)) return false;  // sliding along or closing in
+      c = next;
+    }
+    return true;
+  };
   const double c0 = tau(s1, 1.0);
   const double c1 = tau(s2, 1.0);
   bool ok = c0 > 0.0;
   if (ok) stack.push_back({0.0, c0, 1.0, c1});
-  ob::State* state = si_->allocState();
   while (ok && !stack.empty()) {
     const Segment s = stack.back();
     stack.pop_back();
@@ -83,8 +107,10 @@ bool ArmMotionValidator::certify(const ob::State* s1, const ob::State* s2, doubl
       continue;
     }
     if (length < kMinimumStepFraction) {
-      ok = false;
-      break;
+      ok = escape(s);
+      if (!ok) break;
+      lastValidT = s.tb;
+      continue;
     }
     const double tm = 0.5 * (s.ta + s.tb);
     si_->getStateSpace()->interpolate(s1, s2, tm, state);

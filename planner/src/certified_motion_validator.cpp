@@ -89,8 +89,6 @@ bool CertifiedMotionValidator::certify(const ob::State* s1, const ob::State* s2,
     // every motion rejected, and certified planning from it never solved (an outside review).
     // Such steps are taken while the spare grows by kEscapeGrowth each, up to kEscapeSteps in a
     // row; a motion that slides along or closes in stops at once, as before.
-    constexpr double kEscapeGrowth = 1.1;
-    constexpr int kEscapeSteps = 256;
     if (step < kMinimumStepFraction) {
       const bool escaping = t > 0.0 && spare >= kEscapeGrowth * lastSpare && smallSteps < kEscapeSteps;
       if (t > 0.0 && !escaping) break;

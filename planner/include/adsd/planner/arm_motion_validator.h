@@ -37,7 +37,9 @@ struct ArmMotionCounts {
 /// middle, whose clearance is measured, and both halves are checked, left first. A motion is
 /// rejected when a midpoint (or the end) is not valid, or when a segment shorter than
 /// kMinimumStepFraction of the motion would still need splitting (conservative: a valid motion
-/// grazing an obstacle may be rejected, an invalid one is never accepted).
+/// grazing an obstacle may be rejected, an invalid one is never accepted), unless steps from its
+/// start, each as long as tau there proves alone, cross it with tau growing by kEscapeGrowth per
+/// step: a motion leaving an obstacle its start is flush against.
 ///
 /// Pair by pair: with w_P the pair's bound for the whole motion (B_L, or B_{L1,L2}) and
 /// tau(s) = min over pairs of c_P(s) / w_P (ArmValidityCheckerBase::weightedClearanceUpTo), a

@@ -22,6 +22,15 @@ namespace adsd::planner {
 /// rejected: conservative, never unsafe.
 inline constexpr double kMinimumStepFraction = 1e-5;
 
+/// Except for a motion leaving an obstacle its start is flush against: the floor's steps are taken
+/// while each one's spare clearance is at least this factor times the last one's (dimensionless).
+/// Moving away at speed v, the spare grows by 1 + v / (the bound's speed) per step, so the steps
+/// grow geometrically; one that slides along the obstacle or closes in stops at once.
+inline constexpr double kEscapeGrowth = 1.1;
+/// At most this many such steps (in a row for rigid bodies, per motion for arms): they bound the
+/// queries a motion spends below the floor.
+inline constexpr int kEscapeSteps = 256;
+
 /// Distances are trusted up to this fraction of the scene's length scale (dimensionless): the
 /// accuracy issue 4 asks of exact clearance against the brute-force oracle (1e-10 × the scene's
 /// diagonal). Each certified step gives that much of its clearance away, so rounding in a distance
