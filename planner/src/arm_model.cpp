@@ -252,14 +252,16 @@ Mesh geometryMesh(const urdf::Geometry& g, const fs::path& urdfDir, const std::v
   throw InputError(where + ": collision geometry of unknown type");
 }
 
-/// Every <collision> element of a link, placed by its origin, in one mesh (link frame).
+/// Every <collision> element of a link, placed by its origin, in one mesh (link frame); its
+/// primitive elements also as solids into \p solids (ArmLink::solids).
 ///
 /// urdfdom drops a <collision> element it cannot read (a "nan", a scale of two numbers, an empty
 /// <geometry>) after logging a line, and reads the rest: the link would silently go unchecked
 /// for collisions. So every element of the XML must have come through.
 std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& urdfDir,
                                       const std::vector<std::string>& search, const std::string& path,
-                                      const UrdfOutline& outline, const std::string& urdfdomSaid) {
+                                      const UrdfOutline& outline, const std::string& urdfdomSaid,
+                                      std::vector<ConvexSolid>& solids) {
   std::vector<urdf::CollisionSharedPtr> elements = link.collision_array;
   if (elements.empty() && link.collision) elements.push_back(link.collision);
   const std::vector<int>& lines = outline.collisionLines.at(link.name);
@@ -283,6 +285,7 @@ std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& ur
     const Mesh part = geometryMesh(*c->geometry, urdfDir, search, where);
     const Pose origin = toPose(c->origin);
     const auto first = static_cast<std::uint32_t>(vertices.size());
+    const bool primitive = c->geometry->type != urdf::Geometry::MESH;
     for (const Vec3& p : part.vertices()) {
       const Vec3 placed = origin * p;
       // Each summand is within 1e75, but their sum may not be; Mesh would then name only the link.
@@ -291,6 +294,10 @@ std::optional<Mesh> linkCollisionMesh(const urdf::Link& link, const fs::path& ur
                          ", beyond 1e75");
       }
       vertices.push_back(placed);
+    }
+    if (primitive) {
+      Mesh placed(std::vector<Vec3>(vertices.begin() + first, vertices.end()), part.triangles(), link.name);
+      if (std::optional<ConvexSolid> solid = convexSolidOf(placed)) solids.push_back(std::move(*solid));
     }
     for (const TriangleIndices& t : part.triangles()) triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
   }
@@ -539,7 +546,8 @@ ArmModel readUrdf(const std::string& urdfPath, const std::vector<std::string>& p
         model.joints.back().active = static_cast<int>(model.activeJoints.size() - 1);
       }
     }
-    link.collision = linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath, outline, urdfdomSaid);
+    link.collision =
+        linkCollisionMesh(*visit.link, urdfDir, packageSearchPath, urdfPath, outline, urdfdomSaid, link.solids);
     model.links.push_back(std::move(link));
 
     std::vector<urdf::JointSharedPtr> childJoints = visit.link->child_joints;

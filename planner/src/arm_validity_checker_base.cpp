@@ -78,6 +78,7 @@ ArmValidityCheckerBase::ArmValidityCheckerBase(const ompl::base::SpaceInformatio
     ballRadii_.push_back(radius);
     linkBoxes_.push_back(mesh.bounds());
     linkComponentPoints_.push_back(vertexPerComponent(mesh));
+    if (!model.links[l].solids.empty()) solidBodies_.push_back(linkOfBody_.size() - 1);
   }
   selfPairIndex_.assign(linkOfBody_.size() * linkOfBody_.size(), SIZE_MAX);
   for (const auto& [a, b] : scene_->selfPairs.enabledPairs()) {
@@ -89,6 +90,7 @@ ArmValidityCheckerBase::ArmValidityCheckerBase(const ompl::base::SpaceInformatio
   for (const Mesh& part : scene_->environment) {
     obstacleCentres_.push_back(part.bounds().center());
     obstacleHalves_.push_back(0.5 * part.bounds().sizes());
+    if (!solidBodies_.empty()) obstacleComponentPoints_.push_back(vertexPerComponent(part));
     box.extend(part.bounds());
   }
   scale_ = box.diagonal().norm();
@@ -180,6 +182,20 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
       note("links " + linkName(a) + " and " + linkName(b));
     }
   }
+  // Inside a link's own solid, where their surfaces do not meet (as for the scene's solids).
+  const std::size_t bodies = linkOfBody_.size();
+  heldByALinkSolid(linkPoses, [&](std::size_t holder, std::size_t held) {
+    const auto noted = [&](const std::string& what) { return std::find(found.begin(), found.end(), what) != found.end(); };
+    if (held >= bodies) {
+      if (!noted("link " + linkName(holder) + " and obstacle " + obstacleName(held))) {
+        note("obstacle " + obstacleName(held) + " inside link " + linkName(holder));
+      }
+    } else if (!noted("links " + linkName(holder) + " and " + linkName(held)) &&
+               !noted("links " + linkName(held) + " and " + linkName(holder))) {
+      note("link " + linkName(held) + " inside link " + linkName(holder));
+    }
+    return false;  // every one named
+  });
   if (found.size() > count) {
     const std::size_t more = found.size() - count;
     found.resize(count);
@@ -217,6 +233,49 @@ bool ArmValidityCheckerBase::anyLinkInsideSolid(const std::vector<Pose>& linkPos
   if (scene_->solids.empty()) return false;
   for (std::size_t b = 0; b < linkOfBody_.size(); ++b) {
     if (solidHolding(b, linkPoses[linkOfBody_[b]]) != nullptr) return true;
+  }
+  return false;
+}
+
+template <class Counts>
+bool ArmValidityCheckerBase::heldByALinkSolid(const std::vector<Pose>& linkPoses, Counts counts) const {
+  const double slack = insideSlack();
+  const std::size_t n = linkOfBody_.size();
+  for (const std::size_t b : solidBodies_) {
+    const Pose& pose = linkPoses[linkOfBody_[b]];
+    const Pose toLink = pose.inverse();
+    for (const ConvexSolid& solid : scene_->model->links[linkOfBody_[b]].solids) {
+      // Obstacle parts whose boxes meet the solid's (world frame): down the parts' box tree.
+      const Vec3 centre = pose * solid.box.center();
+      const Vec3 half = pose.linear().cwiseAbs() * (0.5 * solid.box.sizes());
+      std::int32_t stack[64];  // median splits: depth <= log2(parts) + 1
+      int top = 0;
+      if (!obstacleTree_.empty()) stack[top++] = 0;
+      while (top > 0) {
+        const ObstacleNode& node = obstacleTree_[static_cast<std::size_t>(stack[--top])];
+        if (boxGap2(centre, half, node.centre, node.half) > 0.0) continue;
+        if (node.left >= 0) {
+          stack[top++] = node.left;
+          stack[top++] = node.right;
+          continue;
+        }
+        for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+          const std::size_t e = obstacleOrder_[k];
+          if (boxGap2(centre, half, obstacleCentres_[e], obstacleHalves_[e]) > 0.0) continue;
+          for (const Vec3& p : obstacleComponentPoints_[e]) {
+            if (solid.containsStrictly(toLink * p, slack) && counts(b, n + e)) return true;
+          }
+        }
+      }
+      for (const auto& [x, y] : selfPairs_) {
+        if (x != b && y != b) continue;
+        const std::size_t other = x == b ? y : x;
+        const Pose toHolder = toLink * linkPoses[linkOfBody_[other]];
+        for (const Vec3& p : linkComponentPoints_[other]) {
+          if (solid.containsStrictly(toHolder * p, slack) && counts(b, other)) return true;
+        }
+      }
+    }
   }
   return false;
 }
@@ -311,6 +370,10 @@ double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, 
                                             bool obstaclesOnly) const {
   if (!(cap > 0.0)) return 0.0;  // nothing asked for; 0 is a lower bound of every distance
   if (anyLinkInsideSolid(linkPoses)) return 0.0;
+  const std::size_t bodies = linkOfBody_.size();
+  if (heldByALinkSolid(linkPoses, [&](std::size_t, std::size_t held) { return !obstaclesOnly || held >= bodies; })) {
+    return 0.0;
+  }
   thread_local std::vector<PairBound> pairs;
   const double slack = broadPhase(linkPoses, cap, pairs);
   const std::size_t n = linkOfBody_.size();
@@ -347,6 +410,13 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
     const double w = linkWeights[linkOfBody_[b]];
     if (w > 0.0 && solidHolding(b, linkPoses[linkOfBody_[b]]) != nullptr) inside = std::min(inside, -subtract / w);
   }
+  // And an obstacle or a link inside a link's own solid, weighted as that pair.
+  const std::size_t bodies = linkOfBody_.size();
+  heldByALinkSolid(linkPoses, [&](std::size_t holder, std::size_t held) {
+    const double w = held < bodies ? selfPairWeights[selfPairIndex_[holder * bodies + held]] : linkWeights[linkOfBody_[holder]];
+    if (w > 0.0) inside = std::min(inside, -subtract / w);
+    return w > 0.0;
+  });
   // At most 0: the caller rejects, as the pairs' loop below stops at 0 without their minimum.
   if (inside < cap) return inside;
   thread_local std::vector<PairBound> pairs;
@@ -390,7 +460,8 @@ bool ArmValidityCheckerBase::isValid(const ompl::base::State* state) const {
   if (!si_->satisfiesBounds(state)) return false;
   const std::vector<Pose>* poses = posesFor(state);
   // The solids last: most states in collision fail a pair first, and the test is for free ones.
-  return poses != nullptr && separatedAbove(*poses, safetyMargin_) && !anyLinkInsideSolid(*poses);
+  return poses != nullptr && separatedAbove(*poses, safetyMargin_) && !anyLinkInsideSolid(*poses) &&
+         !heldByALinkSolid(*poses, [](std::size_t, std::size_t) { return true; });
 }
 
 bool ArmValidityCheckerBase::isValid(const ompl::base::State* state, double& dist) const {

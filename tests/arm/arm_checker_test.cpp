@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <random>
 
@@ -167,6 +168,84 @@ TEST(ArmValidityChecker, ALinkInsideAPrimitiveObstacleIsInCollision) {
     EXPECT_GT(checker.obstacleClearanceUpTo(s.get(), std::numeric_limits<double>::infinity()), 4.0);
     EXPECT_TRUE(checker.pairsInContact(s.get()).empty());
   }
+}
+
+// The other way round: a link's primitive <collision> elements are solids too (MoveIt's FCL
+// shapes), so a 2 cm box inside the small arm's base box (surfaces 4 cm apart) is in collision,
+// in both checkers, and named; moved out, it is not. Before, the state was valid at clearance
+// 0.04 (an outside review: a sphere inside a SCARA's base, 265 of 300 colliding states valid).
+TEST(ArmValidityChecker, AnObstacleInsideAPrimitiveLinkIsInCollision) {
+  auto model = std::make_shared<const ArmModel>(readUrdf(test::armTestData("slider_arm.urdf")));
+  for (const ArmLink& link : model->links) EXPECT_EQ(link.solids.size(), 1u) << link.name;  // one primitive each
+  // The base box spans x in [-0.2, 0.2], y in [-0.1, 0.1], z in [0, 0.1] (its origin z = 0.05).
+  const ArmScene held = makeArmScene(model, {test::placedBox(Vec3(0.02, 0.02, 0.02), Vec3(0.1, 0.0, 0.05),
+                                                             Pose::Identity(), "grain")});
+  const ArmScene apart = makeArmScene(model, {test::placedBox(Vec3(0.02, 0.02, 0.02), Vec3(0.1, 0.2, 0.05),
+                                                              Pose::Identity(), "grain")});
+  auto si = spaceFor(*model);
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  const double q[2] = {0.0, 0.0};
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
+  const std::vector<double> linkWeights(model->links.size(), 2.0);
+  const std::vector<double> pairWeights(held.selfPairs.enabledPairs().size(), 1.0);
+  auto check = [&](const ArmValidityCheckerBase& inside, const ArmValidityCheckerBase& outside, const std::string& which) {
+    SCOPED_TRACE(which);
+    EXPECT_FALSE(inside.isValid(s.get()));
+    EXPECT_EQ(inside.clearance(s.get()), 0.0);
+    EXPECT_EQ(inside.clearanceUpTo(s.get(), 0.5), 0.0);
+    EXPECT_EQ(inside.obstacleClearanceUpTo(s.get(), 0.5), 0.0);
+    EXPECT_LE(inside.weightedClearanceUpTo(s.get(), linkWeights.data(), pairWeights.data(), 0.0, 1.0), 0.0);
+    const std::vector<std::string> contacts = inside.pairsInContact(s.get(), 10);
+    ASSERT_EQ(contacts.size(), 1u);
+    EXPECT_EQ(contacts[0], "obstacle 'grain' inside link 'base'");
+    EXPECT_TRUE(outside.isValid(s.get()));
+    EXPECT_NEAR(outside.clearance(s.get()), 0.09, 1e-12);  // the grain's face at y = 0.19, the base's at 0.1
+  };
+  check(ArmValidityChecker(si, held), ArmValidityChecker(si, apart), "ours");
+#if ADSD_PLANNER_HAS_FCL
+  check(FclArmValidityChecker(si, held), FclArmValidityChecker(si, apart), "FCL's");
+#endif
+}
+
+// And a link inside another's primitive: a small box on a prismatic joint, two links away from a
+// large box (so the pair is checked), slid into it and out of it.
+TEST(ArmValidityChecker, ALinkInsideAnotherLinksPrimitiveIsInCollision) {
+  const std::string path = testing::TempDir() + "adsd_link_in_link.urdf";
+  {
+    std::ofstream urdf(path);
+    urdf << R"(<robot name="nested">
+  <link name="hull"><collision><geometry><box size="1 1 1"/></geometry></collision></link>
+  <joint name="mount" type="fixed"><parent link="hull"/><child link="arm"/><origin xyz="3 0 0"/></joint>
+  <link name="arm"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <joint name="slide" type="prismatic"><parent link="arm"/><child link="pin"/><origin xyz="-3 0 0"/>
+    <axis xyz="1 0 0"/><limit lower="0" upper="2" effort="1" velocity="1"/></joint>
+  <link name="pin"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+</robot>
+)";
+  }
+  auto model = std::make_shared<const ArmModel>(readUrdf(path));
+  const ArmScene scene = makeArmScene(model, {});
+  ASSERT_EQ(scene.selfPairs.enabledPairs().size(), 1u);  // hull and pin; arm is adjacent to both
+  auto si = spaceFor(*model);
+  ompl::base::ScopedState<> in(si->getStateSpace()), out(si->getStateSpace());
+  const double qIn = 0.0, qOut = 1.0;
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(&qIn, in.get());
+  si->getStateSpace()->as<ArmStateSpace>()->fromJoints(&qOut, out.get());
+  auto check = [&](const ArmValidityCheckerBase& checker, const std::string& which) {
+    SCOPED_TRACE(which);
+    EXPECT_FALSE(checker.isValid(in.get()));
+    EXPECT_EQ(checker.clearance(in.get()), 0.0);
+    EXPECT_GT(checker.obstacleClearanceUpTo(in.get(), 1.0), 0.0);  // no obstacle: the link pair is not one
+    const std::vector<std::string> contacts = checker.pairsInContact(in.get(), 10);
+    ASSERT_EQ(contacts.size(), 1u);
+    EXPECT_EQ(contacts[0], "link 'pin' inside link 'hull'");
+    EXPECT_TRUE(checker.isValid(out.get()));
+    EXPECT_NEAR(checker.clearance(out.get()), 0.45, 1e-12);
+  };
+  check(ArmValidityChecker(si, scene), "ours");
+#if ADSD_PLANNER_HAS_FCL
+  check(FclArmValidityChecker(si, scene), "FCL's");
+#endif
 }
 
 /// States to compare with the brute force: \p regular, or \p sanitized in sanitizer builds, where

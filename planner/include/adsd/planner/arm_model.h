@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "adsd/mesh.h"
+#include "adsd/planner/convex_solids.h"
 
 namespace adsd::planner {
 
@@ -60,6 +61,10 @@ struct ArmLink {
   /// when the link has no collision geometry (such a link is never checked). Visual geometry is
   /// never used.
   std::optional<Mesh> collision;
+  /// The link's primitive <collision> elements (box, cylinder, sphere), each as a solid in the
+  /// link's frame: an obstacle or another link wholly inside one is in collision, as it is for
+  /// MoveIt, whose FCL shapes are solids (a link's mesh elements are surfaces, there and here).
+  std::vector<ConvexSolid> solids;
 };
 
 /// \brief An articulated robot.

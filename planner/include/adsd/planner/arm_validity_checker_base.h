@@ -27,8 +27,9 @@ namespace adsd::planner {
 ///
 /// A state is valid when it lies within the space's bounds, every such distance is above the
 /// safety margin (default 0: touching is a collision), and no link lies inside one of the scene's
-/// solids (ArmScene::solids: its primitives), where its distance and the clearance are 0. The space must be an ArmStateSpace of the
-/// scene's model. All const methods are thread-safe and take no lock: the joint vector, the link
+/// solids (ArmScene::solids: its primitives) and no obstacle or checked link lies inside one of a
+/// link's own (ArmLink::solids: its primitive <collision> elements); inside, the distance and the
+/// clearance are 0. The space must be an ArmStateSpace of the scene's model. All const methods are thread-safe and take no lock: the joint vector, the link
 /// poses and the pair list live in thread_local scratch, and the counters are atomic.
 ///
 /// Broad phase (as RigidBodyValidityChecker's): each link's mesh has a ball and a box in its link
@@ -129,6 +130,12 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   double insideSlack() const { return tolerance::kBoundSafetyUlps * tolerance::kEpsilon * scale_; }
   /// Whether some link lies inside a solid at these poses.
   bool anyLinkInsideSolid(const std::vector<Pose>& linkPoses) const;
+  /// Whether a link's own solid (ArmLink::solids) wholly holds an obstacle part or the other link
+  /// of an enabled pair at these poses (a vertex of each of its components strictly inside) for
+  /// which \p counts(holder body, held body) returns true; bodies as in pairsInContact (obstacle
+  /// part e is body linkOfBody_.size() + e). Defined in the .cpp, its one user.
+  template <class Counts>
+  bool heldByALinkSolid(const std::vector<Pose>& linkPoses, Counts counts) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
   /// The smallest distance over the checked pairs (the link pairs left out when \p obstaclesOnly).
@@ -145,6 +152,8 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   std::vector<std::pair<std::size_t, std::size_t>> selfPairs_;  ///< link bodies, enabled pairs
   std::vector<std::size_t> selfPairIndex_;  ///< link bodies a x b -> index into selfPairs_
   std::vector<Vec3> obstacleCentres_, obstacleHalves_;  ///< world frame, per obstacle part
+  std::vector<std::vector<Vec3>> obstacleComponentPoints_;  ///< world frame, per obstacle part: vertexPerComponent
+  std::vector<std::size_t> solidBodies_;  ///< link bodies whose link has solids (ArmLink::solids)
   /// A node of the obstacle parts' box tree: its box (centre, half extents, world frame), and
   /// either two children or, for a leaf, parts obstacleOrder_[first, first + count).
   struct ObstacleNode {
