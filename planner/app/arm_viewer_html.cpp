@@ -111,6 +111,18 @@ Vec3 upDirection(const ArmValidityCheckerBase& checker, const std::vector<double
 
 }  // namespace
 
+void requireArmViewable(const planner::ArmPlanningProblem& problem, const std::string& where) {
+  const ArmValidityCheckerBase& checker = *problem.checker();
+  const std::string robot = "robot '" + checker.model().name + "'";
+  if (checker.linkBodies() == 0) {
+    throw InputError(where + ": nothing to show: no link of " + robot + " has <collision> geometry");
+  }
+  if (checker.scene().environment.empty() && checker.scene().selfPairs.enabledPairs().empty()) {
+    throw InputError(where + ": nothing to measure a clearance to: the scene has no obstacles and every link pair "
+                     "of " + robot + " is disabled");
+  }
+}
+
 ViewerSummary writeArmViewerHtml(const std::string& file, const planner::ArmPlanningProblem& problem,
                                  const ompl::geometric::PathGeometric* path, const std::string& source) {
   const ompl::base::SpaceInformationPtr& si = problem.spaceInformation();
@@ -152,10 +164,7 @@ ViewerSummary writeArmViewerHtml(const std::string& file, const planner::ArmPlan
   for (std::size_t b = 0; b < links; ++b) bodyOfLink[checker.linkOfBody(b)] = static_cast<int>(b);
   std::vector<std::pair<int, int>> selfPairs;
   for (const auto& [a, b] : checker.scene().selfPairs.enabledPairs()) selfPairs.emplace_back(bodyOfLink[a], bodyOfLink[b]);
-  if (checker.scene().environment.empty() && selfPairs.empty()) {
-    throw InputError(problem.name() + ": nothing to measure a clearance to: the scene has no obstacles and every "
-                     "link pair of robot '" + model.name + "' is disabled");
-  }
+  requireArmViewable(problem, problem.name());
 
   const auto describe = [&](std::size_t i, ViewerState& shown, std::vector<CandidatePair>& pairs) {
     const ompl::base::State* s = states.getState(i);

@@ -30,4 +30,11 @@ namespace adsd::app {
 ViewerSummary writeArmViewerHtml(const std::string& file, const planner::ArmPlanningProblem& problem,
                                  const ompl::geometric::PathGeometric* path, const std::string& source);
 
+/// \brief Throws adsd::InputError, naming \p where (the problem file), when \p problem has nothing
+/// the page could show: no link with collision geometry (nothing to draw), or no obstacle and no
+/// enabled link pair (no clearance). writeArmViewerHtml checks it too (naming the problem);
+/// `adsd view` and `adsd plan --html` ask first, `adsd plan` before planning, so that it fails with
+/// nothing written (it wrote the path file first, an outside review).
+void requireArmViewable(const planner::ArmPlanningProblem& problem, const std::string& where);
+
 }  // namespace adsd::app

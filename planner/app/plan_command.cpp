@@ -301,6 +301,7 @@ int planArm(const PlanArguments& a) {
   requireOutputsApart(a, inputs);
   ArmPlanningProblem problem(file, checkingOptions(a));
   for (const std::string& w : problem.warnings()) std::cerr << "adsd plan: warning: " << w << '\n';
+  if (a.htmlFile) requireArmViewable(problem, a.problem);  // before planning: a refused page leaves nothing written
 
   const std::string plannerName = a.planner.value_or("rrtconnect");
   ompl::geometric::SimpleSetup& ss = problem.setup();

@@ -287,6 +287,7 @@ int viewArm(const ViewArguments& a) {
   cli::requireDistinctFile("--html", a.html, inputs);
   ArmPlanningProblem problem(file, showingOptions());
   for (const std::string& w : problem.warnings()) std::cerr << "adsd view: warning: " << w << '\n';
+  requireArmViewable(problem, a.problem);
   // As `adsd plan` does before solving: the space's validity-checking resolution.
   problem.setup().setup();
   std::optional<ompl::geometric::PathGeometric> path;

@@ -719,6 +719,47 @@ void writeRequest(const fs::path& dir, const std::string& startNames, const std:
   }
 }
 
+// A page with nothing to show is refused before any work, by `adsd view` and by `adsd plan --html`
+// (which planned, wrote the path file, then stopped with an internal error for a robot without
+// collision geometry, and exit 2 with the path written for one with nothing to measure: an
+// outside review). Neither writes a file.
+TEST(ArmViewCommand, PageWithNothingToShowIsRefusedBeforePlanning) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "visual_only.urdf")
+      << "<robot name='visual_only'>\n"
+         "  <link name='base'><visual><geometry><box size='0.1 0.1 0.1'/></geometry></visual></link>\n"
+         "  <link name='arm'><visual><geometry><box size='0.5 0.1 0.1'/></geometry></visual></link>\n"
+         "  <joint name='turn' type='revolute'><parent link='base'/><child link='arm'/>\n"
+         "    <axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
+         "</robot>\n";
+  std::ofstream(dir / "two_boxes.urdf")
+      << "<robot name='two_boxes'>\n"
+         "  <link name='base'><collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision></link>\n"
+         "  <link name='arm'><collision><origin xyz='0.3 0 0'/><geometry><box size='0.5 0.1 0.1'/></geometry>"
+         "</collision></link>\n"
+         "  <joint name='turn' type='revolute'><parent link='base'/><child link='arm'/>\n"
+         "    <axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
+         "</robot>\n";
+  writeRequest(dir, "turn", "0", {{"turn", "0.5"}});
+  for (const auto& [robot, what] : {std::pair<std::string, std::string>{"visual_only.urdf", "nothing to show: no link of "
+                                                                         "robot 'visual_only' has <collision> geometry"},
+                                    {"two_boxes.urdf", "nothing to measure a clearance to: the scene has no obstacles "
+                                                       "and every link pair of robot 'two_boxes' is disabled"}}) {
+    SCOPED_TRACE(robot);
+    const std::string cfg = problemAmongNoObstacles(dir, robot);
+    const fs::path path = dir / "out.path", html = dir / "out.html";
+    const PlanRun p = plan({cfg, "--time", "1", "--path", path.string(), "--html", html.string()}, dir);
+    EXPECT_EQ(p.status, 2) << p.out << p.err;
+    EXPECT_NE(p.err.find("adsd plan: error: " + cfg + ": " + what + "\n"), std::string::npos) << p.err;
+    EXPECT_EQ(p.out, "");
+    const PlanRun v = runAdsd("view", {cfg, "--html", html.string()}, dir);
+    EXPECT_EQ(v.status, 2) << v.out << v.err;
+    EXPECT_NE(v.err.find("adsd view: error: " + cfg + ": " + what + "\n"), std::string::npos) << v.err;
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(html));
+  }
+}
+
 // A joint whose limits are equal (locked) stands at them: it is no coordinate (OMPL cannot plan
 // over a range of zero width, and stopped with an internal error), the start and goal may name it
 // where it stands, and a goal elsewhere is refused naming its line.
