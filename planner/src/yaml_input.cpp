@@ -332,6 +332,11 @@ Pose Document::pose(const Field& f) const {
   Pose p = Pose::Identity();
   if (!f.node.IsDefined()) return p;
   requireMap(f);
+  // `orientaton:` or `positon:` left the object unturned or at the origin without a word (an
+  // outside review): a geometry_msgs/Pose has these two fields and no other.
+  if (const std::vector<Field> other = keysOutside(f, {"position", "orientation"}); !other.empty()) {
+    fail(other.front(), "not a field of a pose (position, orientation)");
+  }
   p.translate(point(child(f, "position")));
   p.rotate(quaternion(child(f, "orientation")));
   return p;

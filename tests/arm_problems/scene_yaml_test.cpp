@@ -191,7 +191,9 @@ TEST(PlanningSceneYamlErrors, BrokenYamlNamesTheLine) {
 }
 
 TEST(PlanningSceneYamlErrors, MissingFieldAndWrongType) {
-  EXPECT_ERROR(withLine(8, "    - idd: table"), ":8:", "field 'world.collision_objects[0].id': is missing");
+  EXPECT_ERROR(withLine(8, "    - idd: table"), ":8:",
+               "field 'world.collision_objects[0].idd': not a field of a moveit_msgs/CollisionObject");
+  EXPECT_ERROR(withLine(8, "    - operation: 0"), ":8:", "field 'world.collision_objects[0].id': is missing");
   EXPECT_ERROR(withLine(16, "          dimensions: abc"), ":16:", "expected a sequence");
   EXPECT_ERROR(withLine(15, "        - typo: box"), ":15:", "primitives[0].type': is missing");
   EXPECT_ERROR("world:\n  collision_objects: 3\n", ":2:", "expected a sequence");
@@ -223,6 +225,19 @@ TEST(PlanningSceneYamlErrors, MistypedPointOrQuaternionKey) {
                "field 'world.collision_objects[0].pose.orientation.W': not a component of a quaternion (x, y, z, w)");
   EXPECT_ERROR(withLine(12, "        position: {x: 1, yy: 0, z: 0}"), ":12:",
                "field 'world.collision_objects[0].pose.position.yy': not a coordinate of a point (x, y, z)");
+}
+
+// A mistyped key of a pose or an object: `orientaton:` left the object unturned, `positon:` and
+// `pos:` (for `pose:`) put it at the origin, without a word (an outside review).
+TEST(PlanningSceneYamlErrors, MistypedPoseOrObjectKey) {
+  EXPECT_ERROR(withLine(13, "        orientaton: {x: 0, y: 0, z: 0.7071067811865476, w: 0.7071067811865476}"), ":13:",
+               "field 'world.collision_objects[0].pose.orientaton': not a field of a pose (position, orientation)");
+  EXPECT_ERROR(withLine(12, "        positon: {x: 1, y: 0, z: 0}"), ":12:",
+               "field 'world.collision_objects[0].pose.positon': not a field of a pose (position, orientation)");
+  EXPECT_ERROR(withLine(19, "          orientaton: {x: 0, y: 0, z: 0, w: 1}"), ":19:",
+               "field 'world.collision_objects[0].primitive_poses[0].orientaton': not a field of a pose");
+  EXPECT_ERROR(withLine(11, "      pos:"), ":11:",
+               "field 'world.collision_objects[0].pos': not a field of a moveit_msgs/CollisionObject");
 }
 
 // A key a PlanningScene does not have: `wrld:` for `world:` read as a scene without obstacles, and
