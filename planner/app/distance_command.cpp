@@ -9,8 +9,10 @@
 // two rigid meshes are answered as a planner would, on sub-mesh trees built once; a few, from
 // scratch by the paper's stages (which need no preprocessing).
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -67,7 +69,8 @@ constexpr const char* kDetails =
     "scratch by the paper's stages (no preprocessing); the summary, and the last line of the\n"
     "line-per-query output, say which path ran and what building the trees took.\n"
     "\n"
-    "Exit status: 0 done, 2 bad input or usage (one line on stderr naming the file and line).\n";
+    "Exit status: 0 done, 1 the output could not be written, 2 bad input or usage (one line on\n"
+    "stderr naming the file and line).\n";
 
 /// Poses from which `--path auto` builds trees: building both trees costs as much as a dozen or
 /// a few dozen queries from scratch on the same meshes (the build grows as n log n in the
@@ -328,9 +331,12 @@ int runDistance(const std::vector<std::string>& args) {
   } else {
     writeSummary(out, a, meshA, meshB, queries.front(), path);
   }
+  errno = 0;
   std::cout << out.str() << std::flush;
   if (!std::cout) {
-    std::cerr << "adsd distance: error: cannot write the output\n";
+    // The stream keeps no reason; errno holds the failed write's (ENOSPC on /dev/full).
+    std::cerr << "adsd distance: error: cannot write the output" << (errno != 0 ? ": " : "")
+              << (errno != 0 ? std::strerror(errno) : "") << '\n';
     return 1;
   }
   return 0;

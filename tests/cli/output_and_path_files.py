@@ -239,7 +239,7 @@ def main():
         pathlib.Path(poses).write_text("".join(f"0 0 {i * 0.001!r} 1 0 0 0 0 0 0 1 0 0 0\n" for i in range(2000)))
         with open(os.path.join(work, "many.out"), "w") as out:
             r = capped(["distance", robot, world, "--poses", poses], 64 * 1024, out)
-        check(r.returncode == 1 and r.stderr == "adsd distance: error: cannot write the output\n",
+        check(r.returncode == 1 and r.stderr == "adsd distance: error: cannot write the output: File too large\n",
               f"distance past a file-size limit: exit {r.returncode}, stderr {r.stderr!r}")
         with open(os.path.join(work, "plan.out"), "w") as out:
             r = capped(["plan", office, "--time", "1", "--seed", "1"], 100, out)
