@@ -1,6 +1,7 @@
 #include "adsd/planner/arm_planning_problem.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <filesystem>
 #include <functional>
@@ -53,7 +54,16 @@ bool isArmProblemFile(const std::string& path) {
     if (section != "problem" || eq == std::string::npos) continue;
     std::string key = s.substr(0, eq);
     key.erase(key.find_last_not_of(" \t") + 1);
-    if (key == "request") return true;
+    // `request`, or what only an arm problem has (an OMPL.app cfg names its obstacles `world`):
+    // an arm cfg without its request line was read as a rigid one, and refused for a missing
+    // `start.x` (an outside review), where the arm reader names the missing `request`.
+    if (key == "request" || key == "scene" || key == "srdf" || key == "package_path") return true;
+    if (key == "robot") {
+      std::string value = s.substr(eq + 1);
+      value.erase(value.find_last_not_of(" \t\r") + 1);
+      std::transform(value.begin(), value.end(), value.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (value.size() >= 5 && value.compare(value.size() - 5, 5, ".urdf") == 0) return true;
+    }
   }
   return false;
 }

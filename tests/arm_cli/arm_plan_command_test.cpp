@@ -227,6 +227,22 @@ TEST(ArmPlanCommand, MissingRequestFileNamesTheCfgLine) {
   expectRefused(cfg, dir, cfg.string() + ":5: key 'problem.request'", "request file");
 }
 
+// An arm cfg without its `request` line was read as an OMPL.app rigid-body problem and refused for
+// a missing `start.x` (an outside review). A URDF robot, a `scene`, an `srdf` or a `package_path`
+// make it an arm problem, whose reader names the missing key.
+TEST(ArmPlanCommand, ArmCfgWithoutItsRequestLineNamesTheKey) {
+  const fs::path dir = workDirectory();
+  for (const std::string& lines : {std::string("robot = robot.URDF\n"), std::string("robot = r.obj\nscene = s.yaml\n"),
+                                   std::string("robot = r.obj\nsrdf = r.srdf\n")}) {
+    SCOPED_TRACE(lines);
+    const fs::path cfg = dir / "problem.cfg";
+    std::ofstream(cfg) << "[problem]\nrequest_typo = r.yaml\n" << lines;
+    // The arm reader's first missing key: `scene` where it is not given, else `request`.
+    const std::string missing = lines.find("scene") == std::string::npos ? "scene" : "request";
+    expectRefused(cfg, dir, cfg.string() + ":1", "key 'problem." + missing + "' is missing from the [problem] section");
+  }
+}
+
 // A directory was reported as a file that "does not exist".
 TEST(ArmPlanCommand, RequestThatIsADirectoryIsNamedAsOne) {
   SKIP_WITHOUT_ROBOTS(cfgOf("kr5_table_pick"));
