@@ -185,7 +185,9 @@ std::vector<std::string> ArmValidityCheckerBase::pairsInContact(const ompl::base
   // Inside a link's own solid, where their surfaces do not meet (as for the scene's solids).
   const std::size_t bodies = linkOfBody_.size();
   heldByALinkSolid(linkPoses, [&](std::size_t holder, std::size_t held) {
-    const auto noted = [&](const std::string& what) { return std::find(found.begin(), found.end(), what) != found.end(); };
+    const auto noted = [&](const std::string& what) {
+      return std::find(found.begin(), found.end(), what) != found.end();
+    };
     if (held >= bodies) {
       if (!noted("link " + linkName(holder) + " and obstacle " + obstacleName(held))) {
         note("obstacle " + obstacleName(held) + " inside link " + linkName(holder));
@@ -413,7 +415,8 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
   // And an obstacle or a link inside a link's own solid, weighted as that pair.
   const std::size_t bodies = linkOfBody_.size();
   heldByALinkSolid(linkPoses, [&](std::size_t holder, std::size_t held) {
-    const double w = held < bodies ? selfPairWeights[selfPairIndex_[holder * bodies + held]] : linkWeights[linkOfBody_[holder]];
+    const double w =
+        held < bodies ? selfPairWeights[selfPairIndex_[holder * bodies + held]] : linkWeights[linkOfBody_[holder]];
     if (w > 0.0) inside = std::min(inside, -subtract / w);
     return w > 0.0;
   });

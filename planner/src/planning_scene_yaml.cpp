@@ -232,9 +232,9 @@ PlanningSceneYaml parsePlanningSceneYaml(const std::string& text, const std::str
     doc.requireMap(object);
     // `pos:` for `pose:` left the object at the origin without a word (an outside review); refused
     // rather than warned of, as the start state's collision it caused was reported first.
-    const std::vector<Field> other =
-        doc.keysOutside(object, {"header", "pose", "id", "type", "primitives", "primitive_poses", "meshes",
-                                 "mesh_poses", "planes", "plane_poses", "subframe_names", "subframe_poses", "operation"});
+    const std::vector<Field> other = doc.keysOutside(
+        object, {"header", "pose", "id", "type", "primitives", "primitive_poses", "meshes", "mesh_poses", "planes",
+                 "plane_poses", "subframe_names", "subframe_poses", "operation"});
     if (!other.empty()) doc.fail(other.front(), "not a field of a moveit_msgs/CollisionObject");
     const Field idField = doc.required(object, "id");
     const std::string id = doc.text(idField);

@@ -188,7 +188,8 @@ TEST(ArmValidityChecker, AnObstacleInsideAPrimitiveLinkIsInCollision) {
   si->getStateSpace()->as<ArmStateSpace>()->fromJoints(q, s.get());
   const std::vector<double> linkWeights(model->links.size(), 2.0);
   const std::vector<double> pairWeights(held.selfPairs.enabledPairs().size(), 1.0);
-  auto check = [&](const ArmValidityCheckerBase& inside, const ArmValidityCheckerBase& outside, const std::string& which) {
+  auto check = [&](const ArmValidityCheckerBase& inside, const ArmValidityCheckerBase& outside,
+                   const std::string& which) {
     SCOPED_TRACE(which);
     EXPECT_FALSE(inside.isValid(s.get()));
     EXPECT_EQ(inside.clearance(s.get()), 0.0);

@@ -757,10 +757,11 @@ TEST(ArmViewCommand, PageWithNothingToShowIsRefusedBeforePlanning) {
          "    <axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
          "</robot>\n";
   writeRequest(dir, "turn", "0", {{"turn", "0.5"}});
-  for (const auto& [robot, what] : {std::pair<std::string, std::string>{"visual_only.urdf", "nothing to show: no link of "
-                                                                         "robot 'visual_only' has <collision> geometry"},
-                                    {"two_boxes.urdf", "nothing to measure a clearance to: the scene has no obstacles "
-                                                       "and every link pair of robot 'two_boxes' is disabled"}}) {
+  using Case = std::pair<std::string, std::string>;  // robot file, what the error says
+  for (const auto& [robot, what] :
+       {Case{"visual_only.urdf", "nothing to show: no link of robot 'visual_only' has <collision> geometry"},
+        Case{"two_boxes.urdf", "nothing to measure a clearance to: the scene has no obstacles and every link pair "
+                               "of robot 'two_boxes' is disabled"}}) {
     SCOPED_TRACE(robot);
     const std::string cfg = problemAmongNoObstacles(dir, robot);
     const fs::path path = dir / "out.path", html = dir / "out.html";

@@ -29,8 +29,9 @@ namespace adsd::planner {
 /// safety margin (default 0: touching is a collision), and no link lies inside one of the scene's
 /// solids (ArmScene::solids: its primitives) and no obstacle or checked link lies inside one of a
 /// link's own (ArmLink::solids: its primitive <collision> elements); inside, the distance and the
-/// clearance are 0. The space must be an ArmStateSpace of the scene's model. All const methods are thread-safe and take no lock: the joint vector, the link
-/// poses and the pair list live in thread_local scratch, and the counters are atomic.
+/// clearance are 0. The space must be an ArmStateSpace of the scene's model. All const methods
+/// are thread-safe and take no lock: the joint vector, the link poses and the pair list live in
+/// thread_local scratch, and the counters are atomic.
 ///
 /// Broad phase (as RigidBodyValidityChecker's): each link's mesh has a ball and a box in its link
 /// frame, each obstacle part a box in the world frame. A pair's lower bound is the larger of its
