@@ -239,6 +239,30 @@ bool ArmValidityCheckerBase::anyLinkInsideSolid(const std::vector<Pose>& linkPos
   return false;
 }
 
+template <class Visit>
+bool ArmValidityCheckerBase::forObstaclePartsNear(const Vec3& centre, const Vec3& half, double reach2,
+                                                  Visit visit) const {
+  std::int32_t stack[64];  // median splits: depth <= log2(parts) + 1
+  int top = 0;
+  if (!obstacleTree_.empty()) stack[top++] = 0;
+  while (top > 0) {
+    const ObstacleNode& node = obstacleTree_[static_cast<std::size_t>(stack[--top])];
+    if (boxGap2(centre, half, node.centre, node.half) > reach2) continue;
+    if (node.left >= 0) {
+      stack[top++] = node.left;
+      stack[top++] = node.right;
+      continue;
+    }
+    // At a leaf, each part's own box (cheap) before the caller's test.
+    for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+      const std::size_t e = obstacleOrder_[k];
+      const double box2 = boxGap2(centre, half, obstacleCentres_[e], obstacleHalves_[e]);
+      if (box2 <= reach2 && visit(e, box2)) return true;
+    }
+  }
+  return false;
+}
+
 template <class Counts>
 bool ArmValidityCheckerBase::heldByALinkSolid(const std::vector<Pose>& linkPoses, Counts counts) const {
   const double slack = insideSlack();
@@ -247,28 +271,16 @@ bool ArmValidityCheckerBase::heldByALinkSolid(const std::vector<Pose>& linkPoses
     const Pose& pose = linkPoses[linkOfBody_[b]];
     const Pose toLink = pose.inverse();
     for (const ConvexSolid& solid : scene_->model->links[linkOfBody_[b]].solids) {
-      // Obstacle parts whose boxes meet the solid's (world frame): down the parts' box tree.
+      // Obstacle parts whose boxes meet the solid's (world frame).
       const Vec3 centre = pose * solid.box.center();
       const Vec3 half = pose.linear().cwiseAbs() * (0.5 * solid.box.sizes());
-      std::int32_t stack[64];  // median splits: depth <= log2(parts) + 1
-      int top = 0;
-      if (!obstacleTree_.empty()) stack[top++] = 0;
-      while (top > 0) {
-        const ObstacleNode& node = obstacleTree_[static_cast<std::size_t>(stack[--top])];
-        if (boxGap2(centre, half, node.centre, node.half) > 0.0) continue;
-        if (node.left >= 0) {
-          stack[top++] = node.left;
-          stack[top++] = node.right;
-          continue;
+      const bool found = forObstaclePartsNear(centre, half, 0.0, [&](std::size_t e, double) {
+        for (const Vec3& p : obstacleComponentPoints_[e]) {
+          if (solid.containsStrictly(toLink * p, slack) && counts(b, n + e)) return true;
         }
-        for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-          const std::size_t e = obstacleOrder_[k];
-          if (boxGap2(centre, half, obstacleCentres_[e], obstacleHalves_[e]) > 0.0) continue;
-          for (const Vec3& p : obstacleComponentPoints_[e]) {
-            if (solid.containsStrictly(toLink * p, slack) && counts(b, n + e)) return true;
-          }
-        }
-      }
+        return false;
+      });
+      if (found) return true;
       for (const auto& [x, y] : selfPairs_) {
         if (x != b && y != b) continue;
         const std::size_t other = x == b ? y : x;
@@ -318,28 +330,15 @@ double ArmValidityCheckerBase::broadPhase(const std::vector<Pose>& linkPoses, do
   }
   // Link × obstacle: down the parts' box tree while the link's box can reach a node's; at a leaf,
   // the box gap first (cheap), the ball gap only for the pairs it keeps.
-  for (std::size_t b = 0; b < n && !obstacleTree_.empty(); ++b) {
+  for (std::size_t b = 0; b < n; ++b) {
     const double ballReach = reach + ballRadii_[b];
-    std::int32_t stack[64];  // median splits: depth <= log2(parts) + 1
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const ObstacleNode& node = obstacleTree_[static_cast<std::size_t>(stack[--top])];
-      if (boxGap2(boxCentre[b], boxHalf[b], node.centre, node.half) > reach2) continue;
-      if (node.left >= 0) {
-        stack[top++] = node.left;
-        stack[top++] = node.right;
-        continue;
-      }
-      for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-        const std::size_t e = obstacleOrder_[k];
-        const double box2 = boxGap2(boxCentre[b], boxHalf[b], obstacleCentres_[e], obstacleHalves_[e]);
-        if (box2 > reach2) continue;
-        const double ball2 = boxGap2(ball[b], Vec3::Zero(), obstacleCentres_[e], obstacleHalves_[e]);
-        if (ball2 > ballReach * ballReach) continue;
+    forObstaclePartsNear(boxCentre[b], boxHalf[b], reach2, [&](std::size_t e, double box2) {
+      const double ball2 = boxGap2(ball[b], Vec3::Zero(), obstacleCentres_[e], obstacleHalves_[e]);
+      if (ball2 <= ballReach * ballReach) {
         pairs.push_back({std::max({0.0, std::sqrt(ball2) - ballRadii_[b], std::sqrt(box2)}), b, n + e});
       }
-    }
+      return false;
+    });
   }
   // Link × link, the enabled pairs: ball–ball and box–box gaps.
   for (const auto& [a, b] : selfPairs_) {

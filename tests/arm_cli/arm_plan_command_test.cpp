@@ -528,10 +528,8 @@ TEST(ArmPlanningProblem, ZeroToleranceGetsTheFloor) {
   EXPECT_EQ(p.goalThreshold(), kArmGoalThresholdFloor);
 }
 
-// A URDF with <visual> geometry only (as dart-doc's test robots) plans as if nothing could collide:
-// the problem says so instead of reporting a path that is collision-free by default.
-TEST(ArmPlanningProblem, RobotWithoutCollisionGeometryIsWarnedOf) {
-  const fs::path dir = workDirectory();
+/// visual_only.urdf in \p dir: two links with <visual> geometry only, joined by the revolute `turn`.
+void writeVisualOnlyRobot(const fs::path& dir) {
   std::ofstream(dir / "visual_only.urdf")
       << "<robot name='visual_only'>\n"
          "  <link name='base'><visual><geometry><box size='0.1 0.1 0.1'/></geometry></visual></link>\n"
@@ -539,6 +537,13 @@ TEST(ArmPlanningProblem, RobotWithoutCollisionGeometryIsWarnedOf) {
          "  <joint name='turn' type='revolute'><parent link='base'/><child link='arm'/>\n"
          "    <axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
          "</robot>\n";
+}
+
+// A URDF with <visual> geometry only (as dart-doc's test robots) plans as if nothing could collide:
+// the problem says so instead of reporting a path that is collision-free by default.
+TEST(ArmPlanningProblem, RobotWithoutCollisionGeometryIsWarnedOf) {
+  const fs::path dir = workDirectory();
+  writeVisualOnlyRobot(dir);
   std::ofstream(dir / "request.yaml") << "group_name: arm\n"
                                          "start_state:\n  joint_state:\n    name: [turn]\n    position: [0]\n"
                                          "goal_constraints:\n  - joint_constraints:\n"
@@ -741,13 +746,7 @@ void writeRequest(const fs::path& dir, const std::string& startNames, const std:
 // outside review). Neither writes a file.
 TEST(ArmViewCommand, PageWithNothingToShowIsRefusedBeforePlanning) {
   const fs::path dir = workDirectory();
-  std::ofstream(dir / "visual_only.urdf")
-      << "<robot name='visual_only'>\n"
-         "  <link name='base'><visual><geometry><box size='0.1 0.1 0.1'/></geometry></visual></link>\n"
-         "  <link name='arm'><visual><geometry><box size='0.5 0.1 0.1'/></geometry></visual></link>\n"
-         "  <joint name='turn' type='revolute'><parent link='base'/><child link='arm'/>\n"
-         "    <axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>\n"
-         "</robot>\n";
+  writeVisualOnlyRobot(dir);
   std::ofstream(dir / "two_boxes.urdf")
       << "<robot name='two_boxes'>\n"
          "  <link name='base'><collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision></link>\n"

@@ -137,6 +137,11 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   /// part e is body linkOfBody_.size() + e). Defined in the .cpp, its one user.
   template <class Counts>
   bool heldByALinkSolid(const std::vector<Pose>& linkPoses, Counts counts) const;
+  /// Down the obstacle parts' box tree: \p visit(e, squared box gap) for each obstacle part e whose
+  /// world box lies within sqrt(\p reach2) of the world box (\p centre, \p half), until it returns
+  /// true (then true). Defined in the .cpp.
+  template <class Visit>
+  bool forObstaclePartsNear(const Vec3& centre, const Vec3& half, double reach2, Visit visit) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
   /// The smallest distance over the checked pairs (the link pairs left out when \p obstaclesOnly).
