@@ -270,8 +270,14 @@ bool ArmValidityCheckerBase::heldByALinkSolid(const std::vector<Pose>& linkPoses
   for (const std::size_t b : solidBodies_) {
     const Pose& pose = linkPoses[linkOfBody_[b]];
     const Pose toLink = pose.inverse();
-    for (const ConvexSolid& solid : scene_->model->links[linkOfBody_[b]].solids) {
-      // Obstacle parts whose boxes meet the solid's (world frame).
+    const std::vector<ConvexSolid>& solids = scene_->model->links[linkOfBody_[b]].solids;
+    // Whether point p (link frame) lies in one of the link's solids.
+    const auto inASolid = [&](const Vec3& p) {
+      return std::any_of(solids.begin(), solids.end(),
+                         [&](const ConvexSolid& solid) { return solid.containsStrictly(p, slack); });
+    };
+    // Obstacle parts whose boxes meet a solid's (world frame).
+    for (const ConvexSolid& solid : solids) {
       const Vec3 centre = pose * solid.box.center();
       const Vec3 half = pose.linear().cwiseAbs() * (0.5 * solid.box.sizes());
       const bool found = forObstaclePartsNear(centre, half, 0.0, [&](std::size_t e, double) {
@@ -281,13 +287,14 @@ bool ArmValidityCheckerBase::heldByALinkSolid(const std::vector<Pose>& linkPoses
         return false;
       });
       if (found) return true;
-      for (const auto& [x, y] : selfPairs_) {
-        if (x != b && y != b) continue;
-        const std::size_t other = x == b ? y : x;
-        const Pose toHolder = toLink * linkPoses[linkOfBody_[other]];
-        for (const Vec3& p : linkComponentPoints_[other]) {
-          if (solid.containsStrictly(toHolder * p, slack) && counts(b, other)) return true;
-        }
+    }
+    // The other link of each enabled pair, its points moved into this link's frame once.
+    for (const auto& [x, y] : selfPairs_) {
+      if (x != b && y != b) continue;
+      const std::size_t other = x == b ? y : x;
+      const Pose toHolder = toLink * linkPoses[linkOfBody_[other]];
+      for (const Vec3& p : linkComponentPoints_[other]) {
+        if (inASolid(toHolder * p) && counts(b, other)) return true;
       }
     }
   }
