@@ -73,7 +73,9 @@ void Query::testAllPairs(const SubMesh& a, const SubMesh& b) {
       // pair has been measured: a query must end with a real distance, never an infinite one;
       // tests/stress ThresholdModeNeverAnswersAnInfiniteDistance.)
       const Vec3 gap = (q0.cwiseMin(q1).cwiseMin(q2) - hiA).cwiseMax(loA - q0.cwiseMax(q1).cwiseMax(q2)).cwiseMax(0.0);
+      charge(tolerance::kWorkBoxTest);
       if (std::isfinite(best_) && skip(gap.norm() - roundoff_)) continue;
+      charge(tolerance::kWorkTrianglePair);
       const double limit = pruneBound();
       const double ceiling = triangleCeiling(limit);
       const TrianglePairResult t = triangleDistanceBelow(p0, p1, p2, q0, q1, q2, enoughDistance(), ceiling);
@@ -103,6 +105,8 @@ void Query::visit(const SubMesh& a, const SubMesh& b, int depth, const Vec3& hin
                              hint, [&](double lowerSafe) { return skip(lowerSafe); }, magnitude_);
   counters_.gjkIterations += g.iterations;
   counters_.gjkMaxIterations = std::max(counters_.gjkMaxIterations, g.iterations);
+  charge(tolerance::kWorkSupportVertex * static_cast<std::uint64_t>(g.iterations) *
+         (static_cast<std::uint64_t>(a.v1 - a.v0) + (b.v1 - b.v0)));
   // Observation 1: the support points lie on the meshes, so their distance bounds the answer.
   offer(g.closest);
   if (done_) return;
@@ -135,6 +139,7 @@ void Query::splitAdaptively(const SubMesh& a, const SubMesh& b, int depth, const
   // before B begins and the rest; the plane through A's support point (n.x = maxA) cuts B into the
   // part wholly beyond A and the rest. The parts so cut off are separated from the other mesh by
   // construction, so three of the four child pairs have disjoint hulls.
+  charge(tolerance::kWorkTrianglePass * (nA + nB));
   projectA(a, n);
   projectB(b, n);
   double maxA = -std::numeric_limits<double>::infinity();

@@ -107,6 +107,18 @@ class Query {
   /// the result in \p out, decided in the world frame before placeFrames (tree_traversal.cpp).
   bool rootSpheresApart(DistanceResult& out) const;
   DistanceResult finish() const;
+  /// The paper's stages from scratch on the whole meshes (Algorithm 1 from the roots).
+  void runFromScratch();
+  /// Work of the stages from scratch, in units of about a nanosecond each
+  /// (tolerance::kScratchWorkPerTriangle): past the budget the query stops (done_) and run()
+  /// finishes it on trees.
+  void charge(std::uint64_t units) {
+    scratchWork_ += units;
+    if (scratchWork_ > scratchBudget_) {
+      counters_.scratchAbandoned = 1;
+      done_ = true;
+    }
+  }
   /// Offers the distance of the triangles that answered the last query between these meshes
   /// (WitnessHint), when the scratch has them.
   void startFromWitnessHint();
@@ -255,6 +267,8 @@ class Query {
   // Smallest lower bound of any pair dropped by the mode's rules (tolerance, threshold, cap).
   double minSkippedLower_ = std::numeric_limits<double>::infinity();
   bool done_ = false;  // the answer is settled (offer): within a validity query's threshold, or 0
+  std::uint64_t scratchWork_ = 0;
+  std::uint64_t scratchBudget_ = std::numeric_limits<std::uint64_t>::max();
   DistanceCounters counters_;
 };
 

@@ -92,6 +92,9 @@ struct DistanceCounters {
   std::uint64_t pairsHashed = 0;           ///< pairs that reached the spatial hashing stage (sec. 5)
   std::uint64_t pairsSplit = 0;            ///< pairs whose hulls overlapped and were split (sec. 6)
   std::uint64_t trianglesHashed = 0;       ///< triangles inside the slabs (first culling)
+  /// Hashing stages started again with the upper bound they had lowered (sec. 5's slab and cells
+  /// sized anew for the triangles left); their triangles count again in trianglesHashed.
+  std::uint64_t hashRestarts = 0;
   std::uint64_t trianglePairsTested = 0;   ///< exact triangle-triangle distance evaluations
   std::uint64_t gjkCalls = 0;              ///< GJK runs
   std::uint64_t gjkIterations = 0;         ///< GJK iterations over all runs
@@ -100,6 +103,11 @@ struct DistanceCounters {
   /// triangles apart, such as a stack of copies of one triangle) and was finished from scratch;
   /// the counts above then hold both passes.
   int treeAbandoned = 0;
+  /// 1 when a query from scratch went over its budget of work (about what building both meshes'
+  /// trees costs) and was finished on trees built for it and dropped after it; the counts above
+  /// then hold both passes. A caller asking many queries of such meshes should build the trees
+  /// once (Mesh::buildHierarchy).
+  int scratchAbandoned = 0;
 };
 
 /// \brief The answer. Lengths in the scene's units; points in the world frame.
@@ -124,7 +132,9 @@ struct DistanceResult {
 };
 
 /// \brief Per-thread working memory for queries. Reused, it makes queries allocation-free once
-/// it has grown to the meshes' size. Not shareable between threads running queries at once.
+/// it has grown to the meshes' size, except a query from scratch that goes over its budget: it
+/// builds trees for itself (DistanceCounters::scratchAbandoned). Not shareable between threads
+/// running queries at once.
 ///
 /// It also remembers, per mesh pair (by address), the triangles of the last answer: the next
 /// query between the same meshes measures them first, which gives it an upper bound close to the

@@ -122,6 +122,33 @@ inline constexpr double kHashCandidatesPerTriangle = 128.0;
 /// every triangle of the other slab (with a box bound): keeps the table linear in size.
 inline constexpr int kMaxCellsPerTriangle = 64;
 
+/// Hashing: a slab triangle larger than this many times the slab's mean triangle is left out of
+/// the mean that sizes the cells (spatial_hash.cpp): a few giant triangles among small ones would
+/// otherwise make one cell hold every small triangle.
+inline constexpr double kOutlierTriangleSize = 8.0;
+
+/// Hashing: a stage whose upper bound has fallen to a quarter of its reach starts again with the
+/// new bound (spatial_hash.cpp) only while at least this many B triangles are left to test:
+/// rebuilding the grid costs a pass over both slabs.
+inline constexpr std::size_t kHashRestartTriangles = 16;
+
+/// A query from scratch whose work passes this many units (about a nanosecond each on the
+/// machine the weights below were measured on) per triangle of both meshes, and at least
+/// kScratchWorkAtLeast, is finished on trees built for it: building both trees costs about this
+/// (2.0 us a triangle for dragon_res4 and the bunny, 2.1 for two cows: `adsd distance --path
+/// tree` prints the build time). So a query pays at most about twice what the better of the two
+/// paths would have cost had it been known in advance, where a query from scratch alone could
+/// cost 15 times the build (dragon_res4 against the bunny: 0.44 s, 953 031 triangle pairs).
+inline constexpr std::uint64_t kScratchWorkPerTriangle = 2000;
+inline constexpr std::uint64_t kScratchWorkAtLeast = 1000000;
+/// The cost model's weights, in the same units: an exact triangle-pair test, a box test that
+/// may spare one, a vertex scanned by a support search, a triangle projected and sorted by a
+/// split or gathered into a slab.
+inline constexpr std::uint64_t kWorkTrianglePair = 300;
+inline constexpr std::uint64_t kWorkBoxTest = 8;
+inline constexpr std::uint64_t kWorkSupportVertex = 2;
+inline constexpr std::uint64_t kWorkTrianglePass = 10;
+
 /// Hashing: cells per axis at most (cell size grows to respect it), so cell indices fit easily in
 /// 32 bits whatever the ratio of scene size to cell size.
 inline constexpr double kMaxCellsPerAxis = 1 << 20;
