@@ -307,14 +307,15 @@ DistanceResult Query::run() {
     runFromScratch();
     return remember(finish());
   }
-  // From scratch, within a budget of about what building both trees costs: the paper's bounds
+  // From scratch, within a budget of about twice what building both trees costs: the paper's bounds
   // can stay loose over thousands of triangle pairs (dragon_res4 against the bunny 2.0 apart:
   // 953 031 pairs tested, 0.44 s, where the trees cost 29 ms to build and 1 ms to query).
   scratchBudget_ = std::max<std::uint64_t>(tolerance::kScratchWorkPerTriangle * (std::uint64_t{nA} + nB),
                                            tolerance::kScratchWorkAtLeast);
   runFromScratch();
   const bool settled = best_ <= 0.0 || (options_.mode == QueryMode::threshold && best_ <= options_.threshold);
-  if (counters_.scratchAbandoned == 0 || settled) return remember(finish());
+  if (settled) counters_.scratchAbandoned = 0;  // the pair that settled it came with the last charge
+  if (counters_.scratchAbandoned == 0) return remember(finish());
   // Over it: trees for this query alone (a mesh's own, where it has one) finish it, from the
   // upper bound found; the bounds of the pairs the stages dropped still hold (minSkippedLower_).
   // Trees that cannot tell the triangles apart give up in turn (treeAbandoned), and the stages

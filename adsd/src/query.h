@@ -149,8 +149,10 @@ class Query {
   void projectA(const SubMesh& a, const Vec3& n);
   void projectB(const SubMesh& b, const Vec3& n);
   // --- stage two (spatial_hash.cpp) ---
-  /// Tests a separated pair by spatial hashing; false, having tested nothing, when the grid would
-  /// cull too little for the pair's size (tolerance::kHashCandidatesPerTriangle): split it then.
+  /// Tests a separated pair by spatial hashing; false when the grid would cull too little for the
+  /// pair's size (tolerance::kHashCandidatesPerTriangle): split it then. A stage that started
+  /// again with a lower bound (hashRestarts) may decline after testing some pairs; the split
+  /// covers them again.
   bool hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g);
   /// First culling: the triangles of a sub-mesh reaching into the slab, into slabA / slabB.
   void gatherSlabA(const SubMesh& a, const Vec3& ex, const Vec3& ey, const Vec3& ez, double slabLow);

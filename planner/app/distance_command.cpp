@@ -67,7 +67,7 @@ constexpr const char* kDetails =
     "Path: with --path auto (the default), a pose file of at least 16 lines is answered on sub-mesh\n"
     "trees built once for both meshes (what a planner keeps between queries), fewer poses from\n"
     "scratch by the paper's stages (no preprocessing). A query from scratch that goes over a\n"
-    "budget of about what building the trees costs is finished on trees, and with auto the\n"
+    "budget of about twice what building the trees costs is finished on trees, and with auto the\n"
     "queries after it use them too. The summary, and the last line of the line-per-query output,\n"
     "say which path ran and what building the trees took.\n"
     "\n"
@@ -340,8 +340,13 @@ int runDistance(const std::vector<std::string>& args) {
       ++path.scratchQueries;
       if (q.result.counters.scratchAbandoned != 0) {
         ++path.overBudget;
-        // These meshes cost more from scratch than trees cost to build: keep trees for the rest.
-        if (a.path == QueryPath::automatic) buildTrees();
+        // These meshes cost more from scratch than trees cost to build: keep trees for the poses
+        // left, unless the trees could not tell the surfaces apart either (treeAbandoned: every
+        // query on them would give up and finish from scratch).
+        if (a.path == QueryPath::automatic && queries.size() < poses.size() &&
+            q.result.counters.treeAbandoned == 0) {
+          buildTrees();
+        }
       }
     }
   }

@@ -6,7 +6,7 @@
 A ring 0.26 across inside a sphere shell of radius 1: every pair of their triangles lies within
 0.3 of the answer, so the paper's stages cannot drop them and went on testing tens of thousands
 of triangle pairs (an outside review: dragon_res4 2.0 from the bunny, 0.44 s for one query where
-building both trees took 29 ms). Past a budget of about the build's cost the query is finished
+building both trees took 29 ms). Past a budget of about twice the build's cost it is finished
 on trees built for it; the counters say so (CSV column scratch_abandoned), and with `--path auto`
 the queries after it run on trees the command keeps. Every path gives the same distances.
 """

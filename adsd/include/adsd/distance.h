@@ -103,7 +103,7 @@ struct DistanceCounters {
   /// triangles apart, such as a stack of copies of one triangle) and was finished from scratch;
   /// the counts above then hold both passes.
   int treeAbandoned = 0;
-  /// 1 when a query from scratch went over its budget of work (about what building both meshes'
+  /// 1 when a query from scratch went over its budget of work (about twice what building both meshes'
   /// trees costs) and was finished on trees built for it and dropped after it; the counts above
   /// then hold both passes. A caller asking many queries of such meshes should build the trees
   /// once (Mesh::buildHierarchy).

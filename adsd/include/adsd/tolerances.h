@@ -134,12 +134,16 @@ inline constexpr std::size_t kHashRestartTriangles = 16;
 
 /// A query from scratch whose work passes this many units (about a nanosecond each on the
 /// machine the weights below were measured on) per triangle of both meshes, and at least
-/// kScratchWorkAtLeast, is finished on trees built for it: building both trees costs about this
-/// (2.0 us a triangle for dragon_res4 and the bunny, 2.1 for two cows: `adsd distance --path
-/// tree` prints the build time). So a query pays at most about twice what the better of the two
-/// paths would have cost had it been known in advance, where a query from scratch alone could
-/// cost 15 times the build (dragon_res4 against the bunny: 0.44 s, 953 031 triangle pairs).
-inline constexpr std::uint64_t kScratchWorkPerTriangle = 2000;
+/// kScratchWorkAtLeast, is finished on trees built for it: about twice what building both trees
+/// costs (2.0 us a triangle for dragon_res4 and the bunny, 2.1 for two cows: `adsd distance
+/// --path tree` prints the build time). Such a query then costs about three builds and a query
+/// on the trees, where from scratch alone it could cost 15 builds (dragon_res4 against the bunny:
+/// 0.44 s, 953 031 triangle pairs). Twice rather than once: queries from scratch of one or two
+/// builds are common where every part of one surface lies near the other (two parallel wavy
+/// sheets: 111 ms against a 67 ms build, an outside review), and there the trees give up too
+/// (treeAbandoned), so that with a budget of one build the query paid the budget, the build, the
+/// traversal's budget and the whole pass from scratch again (3.3 times).
+inline constexpr std::uint64_t kScratchWorkPerTriangle = 4000;
 inline constexpr std::uint64_t kScratchWorkAtLeast = 1000000;
 /// The cost model's weights, in the same units: an exact triangle-pair test, a box test that
 /// may spare one, a vertex scanned by a support search, a triangle projected and sorted by a
