@@ -110,6 +110,12 @@ def main():
         last = r.stdout.splitlines()[-1] if r.stdout else ""
         check("1 of 1 over the budget" in last and "then sub-mesh trees, built once" in last and "3 queries" in last,
               f"--path auto: the last line says the switch: {last!r}")
+        # One query: nothing left to build trees for.
+        r = subprocess.run([adsd, "distance", "ring.off", "shell.off"], capture_output=True, text=True, timeout=300,
+                           cwd=work)
+        path = [line for line in r.stdout.splitlines() if line.startswith("path")]
+        check(len(path) == 1 and "1 of 1 over the budget" in path[0] and "then" not in path[0],
+              f"one query: over the budget, and no trees built after it: {path}")
     for f in failures:
         print("FAIL:", f)
     print(f"{len(failures)} failures")
