@@ -16,6 +16,8 @@ import subprocess
 import sys
 import tempfile
 
+from script_checks import check, report
+
 # (arguments, the text the one line must hold)
 BAD = {
     "adsd": [
@@ -119,18 +121,10 @@ f 4 1 5
 f 4 5 8
 """
 
-failures = []
-
 
 def run(program, args, cwd):
     env = dict(os.environ, LC_ALL="de_DE.UTF-8", LANG="de_DE.UTF-8")
     return subprocess.run([program] + args, cwd=cwd, env=env, capture_output=True, text=True, timeout=120)
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-    return ok
 
 
 def main():
@@ -163,10 +157,7 @@ def main():
             p = run(programs["adsd_stress"], ["--family", "tri/", "--cases", "2", "--threads", "1", "--scale", "0.5"],
                     work)
             check(p.returncode == 0, "adsd_stress --scale 0.5: exit %d\n%s%s" % (p.returncode, p.stdout, p.stderr))
-    for f in failures:
-        print("FAIL: " + f)
-    print("%d failures" % len(failures))
-    return 1 if failures else 0
+    return report()
 
 
 if __name__ == "__main__":

@@ -14,14 +14,9 @@ import re
 import subprocess
 import sys
 
+from script_checks import check, report
+
 COMMANDS = ["distance", "plan", "benchmark", "view", "srdf"]
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-    return ok
 
 
 def run(adsd, args):
@@ -68,10 +63,7 @@ def main():
         check(bool(listed), "adsd %s --help lists no option" % command)
         check(listed == documented, "adsd %s: --help lists %s, docs/commands.md %s (only in help: %s, only in docs: %s)"
               % (command, sorted(listed), sorted(documented), sorted(listed - documented), sorted(documented - listed)))
-    for f in failures:
-        print("FAIL: " + f)
-    print("%d failures" % len(failures))
-    return 1 if failures else 0
+    return report()
 
 
 if __name__ == "__main__":

@@ -30,13 +30,7 @@ import subprocess
 import sys
 import tempfile
 
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-    return ok
+from script_checks import check, report
 
 
 def run(adsd, args, cwd):
@@ -280,10 +274,7 @@ def main():
             shipped = r.stderr.strip().rsplit(" ", 1)[-1]
             check(r.returncode == 2 and "the shipped problem of that name is" in r.stderr and os.path.isfile(shipped),
                   f"{command[0]} office.cfg outside its directory: exit {r.returncode}, stderr {r.stderr!r}")
-    for f in failures:
-        print("FAIL:", f)
-    print(f"{len(failures)} failure(s)")
-    return 1 if failures else 0
+    return report()
 
 
 if __name__ == "__main__":

@@ -18,13 +18,7 @@ import sys
 import tempfile
 import time
 
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-    return ok
+from script_checks import check, report
 
 
 def box(cx, cy, hx, hy, h):
@@ -92,9 +86,7 @@ def main():
         expect_back(adsd, ["benchmark", "tiny_turn.cfg", "--planner", "bitstar", "--checker", "adsd", "--motion",
                            "discrete", "--runs", "1", "--time", "1", "--seed", "1", "--log-only", "--out", "results"],
                     work, [os.path.join(work, "results")])
-    for f in failures:
-        print("FAIL:", f)
-    return 1 if failures else 0
+    return report()
 
 
 if __name__ == "__main__":

@@ -16,13 +16,7 @@ import subprocess
 import sys
 import tempfile
 
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-    return ok
+from script_checks import check, failures, report
 
 
 def off_text(vertices, triangles):
@@ -116,10 +110,7 @@ def main():
         path = [line for line in r.stdout.splitlines() if line.startswith("path")]
         check(len(path) == 1 and "1 of 1 over the budget" in path[0] and "then" not in path[0],
               f"one query: over the budget, and no trees built after it: {path}")
-    for f in failures:
-        print("FAIL:", f)
-    print(f"{len(failures)} failures")
-    return 1 if failures else 0
+    return report()
 
 
 if __name__ == "__main__":
