@@ -71,6 +71,8 @@ def distances(adsd, args, cwd):
         return []
     rows = r.stdout.splitlines()
     header = rows[0].split(",")
+    if not check("scratch_abandoned" in header, f"{args}: no scratch_abandoned column in {rows[0]!r}"):
+        return []
     return [dict(zip(header, row.split(","))) for row in rows[1:]]
 
 
