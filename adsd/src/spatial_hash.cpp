@@ -146,10 +146,10 @@ bool Query::hashStage(const SubMesh& a, const SubMesh& b, const GjkResult& g) {
     }
     meanSize /= static_cast<double>(slabA.size());
     // The mean again without the triangles far larger than it: one triangle 2e4 across added to a
-    // cow raised the mean, and with it the cell, to about the cow's size, so that near its copy
-    // every B triangle met nearly every A triangle (the copy turned and 0.18 away: 59 ms, and
-    // 7.8 ms with the giant left out, the reviewer's mesh from an outside review). Left out of the
-    // mean, such triangles cover many cells and meet the B triangles directly instead (bigA).
+    // cow (an outside review's mesh) raised the mean, and with it the cell, to about the cow's
+    // size, so that near its copy every B triangle met nearly every A triangle (the copy turned
+    // and 0.18 away: 59 ms, and 7.8 ms with the giant left out). Left out of the mean, such
+    // triangles cover many cells and meet the B triangles directly instead (bigA).
     double keptSize = 0.0;
     std::size_t kept = 0;
     for (const SlabTriangle& s : slabA) {
