@@ -1079,6 +1079,19 @@ TEST(LoadMeshBadInput, MalformedOff) {
   EXPECT_NE(none.find("no triangles"), std::string::npos) << none;
   const std::string far = loadError(dir.write("far.off", "OFF\n3 1 0\n0 0 0\n1e80 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_NE(far.find("far.off:4: vertex 1: coordinate 1e+80 is beyond +-1e75"), std::string::npos) << far;
+  // A count past the reader's limit is named as one, not as a word that is no count (an outside
+  // review: 1e12 vertices read "expected the OFF keyword or a count").
+  const std::string huge = loadError(dir.write("huge.off", "OFF\n1000000000000 1 0\n0 0 0\n"));
+  EXPECT_NE(huge.find("huge.off:2: the vertex count '1000000000000' is more than the reader takes (4294967295)"),
+            std::string::npos)
+      << huge;
+  const std::string faces20 = loadError(dir.write("faces20.off", "OFF\n3 99999999999999999999 0\n"));
+  EXPECT_NE(faces20.find("faces20.off:2: the face count '99999999999999999999' is more than"), std::string::npos)
+      << faces20;
+  const std::string negative = loadError(dir.write("negative.off", "OFF\n-3 1 0\n"));
+  EXPECT_NE(negative.find("negative.off:2: expected the OFF keyword or a count (vertices faces edges), got '-3'"),
+            std::string::npos)
+      << negative;
   const std::string binary = loadError(dir.write("binary.off", "OFF BINARY\n"));
   EXPECT_NE(binary.find("binary.off:1: binary OFF is not read"), std::string::npos) << binary;
   // Data after the last face: the counts do not describe the file (it was accepted, the rest unread).
