@@ -61,8 +61,8 @@ constexpr const char* kDetails =
     "Coordinates and pose translations beyond +-1e75 are refused (squared lengths would overflow).\n"
     "\n"
     "CSV columns: distance,lower,upper,status,ax,ay,az,bx,by,bz,micros, then line (the pose-file\n"
-    "line, 0 without --poses), triangle_a, triangle_b and the query's counters. Witness fields\n"
-    "are empty when the query needed no triangle pair to prove its status.\n"
+    "line, 0 without --poses), triangle_a, triangle_b, the query's counters and its path (tree or\n"
+    "scratch). Witness fields are empty when the query needed no triangle pair to prove its status.\n"
     "\n"
     "Path: with --path auto (the default), a pose file of at least 16 lines is answered on sub-mesh\n"
     "trees built once for both meshes (what a planner keeps between queries), fewer poses from\n"
@@ -181,6 +181,7 @@ struct Query {
   int line = 0;  ///< pose-file line, 0 without --poses
   DistanceResult result;
   double micros = 0.0;
+  bool onTrees = false;  ///< answered on the trees the command built (else from scratch)
 };
 
 std::string describeMode(const DistanceOptions& o) {
@@ -273,7 +274,7 @@ void writeCsvHeader(std::ostream& out) {
   out << "distance,lower,upper,status,ax,ay,az,bx,by,bz,micros,line,triangle_a,triangle_b,max_depth,"
          "sub_mesh_pairs,pairs_rejected_by_bounds,pairs_hashed,pairs_split,triangles_hashed,"
          "triangle_pairs_tested,gjk_calls,gjk_iterations,gjk_max_iterations,tree_abandoned,hash_restarts,"
-         "scratch_abandoned\n";
+         "scratch_abandoned,path\n";
 }
 
 void writeCsvRow(std::ostream& out, const Query& q) {
@@ -291,7 +292,8 @@ void writeCsvRow(std::ostream& out, const Query& q) {
   out << micros(q.micros) << ',' << q.line << ',' << r.triangleA << ',' << r.triangleB << ',' << c.maxDepth << ','
       << c.subMeshPairs << ',' << c.pairsRejectedByBounds << ',' << c.pairsHashed << ',' << c.pairsSplit << ','
       << c.trianglesHashed << ',' << c.trianglePairsTested << ',' << c.gjkCalls << ',' << c.gjkIterations << ','
-      << c.gjkMaxIterations << ',' << c.treeAbandoned << ',' << c.hashRestarts << ',' << c.scratchAbandoned << '\n';
+      << c.gjkMaxIterations << ',' << c.treeAbandoned << ',' << c.hashRestarts << ',' << c.scratchAbandoned << ','
+      << (q.onTrees ? "tree" : "scratch") << '\n';
 }
 
 int runDistance(const std::vector<std::string>& args) {
@@ -325,6 +327,7 @@ int runDistance(const std::vector<std::string>& args) {
   for (const io::PosePair& p : poses) {
     Query q;
     q.line = p.line;
+    q.onTrees = path.trees;
     const auto start = std::chrono::steady_clock::now();
     try {
       q.result = distance(meshA, p.a, meshB, p.b, a.options, scratch);

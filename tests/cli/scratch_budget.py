@@ -99,6 +99,9 @@ def main():
             check([r["scratch_abandoned"] for r in automatic] == ["1", "0", "0"],
                   f"--path auto: the first query over the budget, the rest on the kept trees, got "
                   f"{[r['scratch_abandoned'] for r in automatic]}")
+            paths = [[r["path"] for r in rows] for rows in (scratch, trees, automatic)]
+            check(paths == [["scratch"] * 3, ["tree"] * 3, ["scratch", "tree", "tree"]],
+                  f"the CSV's path column, --path scratch, tree and auto: {paths}")
             for s, t, a in zip(scratch, trees, automatic):
                 d = [float(s["distance"]), float(t["distance"]), float(a["distance"])]
                 check(max(d) - min(d) <= 1e-12 and 0.6 < min(d) < 0.9, f"line {s['line']}: the paths disagree: {d}")
