@@ -178,15 +178,16 @@ class OffReader {
           throw InputError(at() + "unexpected " + quoteToken(tokens[t]) +
                            " after the three counts (vertices faces edges)" + began);
         }
+        const bool parsed = parseInteger(tokens[t], count);
         const bool digits =
             std::all_of(tokens[t].begin(), tokens[t].end(), [](char c) { return c >= '0' && c <= '9'; });
-        if (digits && (!parseInteger(tokens[t], count) || count > kMaxCount)) {
+        if (digits && (!parsed || count > kMaxCount)) {
           // A whole number past what the reader takes: say so, rather than that it is no count.
           static constexpr const char* kCountNames[3] = {"vertex", "face", "edge"};
           throw InputError(at() + "the " + kCountNames[counts.size()] + " count " + quoteToken(tokens[t]) +
                            " is more than the reader takes (" + std::to_string(kMaxCount) + ")");
         }
-        if (!parseInteger(tokens[t], count) || count < 0 || count > kMaxCount) {
+        if (!parsed || count < 0 || count > kMaxCount) {
           throw InputError(at() + "expected the OFF keyword or a count (vertices faces edges), got " +
                            quoteToken(tokens[t]));
         }
