@@ -202,6 +202,8 @@ MeshHierarchy::MeshHierarchy(const Mesh& mesh) {
   for (std::uint32_t c = 0; c < count; ++c) components.centroid[c] /= 3.0 * components.size[c];
   std::vector<std::uint32_t> marks(mesh.vertices().size(), UINT32_MAX);
   build(mesh, components, 0, static_cast<std::uint32_t>(mesh.triangleCount()), 1, marks);
+  positionInOrder_.resize(order_.size());
+  for (std::uint32_t i = 0; i < order_.size(); ++i) positionInOrder_[order_[i]] = i;
   onHullBoundary_ = wholeMeshConvex(mesh);
 }
 
@@ -394,7 +396,7 @@ void MeshHierarchy::refit(const Mesh& mesh) {
 
 std::size_t MeshHierarchy::bytes() const {
   return sizeof(*this) + nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(std::uint32_t) +
-         leafVertices_.capacity() * sizeof(std::uint32_t);
+         leafVertices_.capacity() * sizeof(std::uint32_t) + positionInOrder_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace adsd

@@ -202,6 +202,9 @@ class Query {
   /// the pair farther than \p bound, once the hulls are proven within \p bound (no margin can
   /// then prove it), or after a few iterations. Returns the margin (- roundoff).
   double hullBound(std::int32_t a, std::int32_t b, double bound);
+  /// Whether tree nodes \p a (of A) and \p b (of B) hold the triangles of the nearest pair found
+  /// so far (best_): their hulls are then at most best_ apart.
+  bool holdsBestPair(std::int32_t a, std::int32_t b) const;
 
   // --- the mode's rules ---
   /// May a pair (of sub-meshes or triangles) whose distance is at least `lowerSafe` be dropped?

@@ -653,7 +653,29 @@ GjkResult Query::gjkOnNodes(std::int32_t a, std::int32_t b, const std::function<
   return g;
 }
 
+bool Query::holdsBestPair(std::int32_t a, std::int32_t b) const {
+  // Features are triangles on the tree path, except a whole-mesh vertex scan's (settleConvexPair),
+  // and a query finished on trees after its stages from scratch ran over their budget starts
+  // from what those found.
+  if (bestFeatureA_ < 0 || bestFeatureB_ < 0 || bestVertexA_ || bestVertexB_) return false;
+  const auto ta = static_cast<std::size_t>(bestFeatureA_), tb = static_cast<std::size_t>(bestFeatureB_);
+  if (ta >= a_.triangleCount() || tb >= b_.triangleCount()) return false;
+  const MeshHierarchy::Node& na = treeA_->nodes()[a];
+  const MeshHierarchy::Node& nb = treeB_->nodes()[b];
+  const std::uint32_t pa = treeA_->positionInOrder()[ta], pb = treeB_->positionInOrder()[tb];
+  return na.t0 <= pa && pa < na.t1 && nb.t0 <= pb && pb < nb.t1;
+}
+
 double Query::hullBound(std::int32_t a, std::int32_t b, double bound) {
+  // A pair that holds the nearest triangle pair found so far has hulls no farther apart than
+  // best_, so when the bound is best_ itself (an exact query's, but for the tie slack) no support
+  // plane can prove the pair beyond it: GJK would be spent for nothing. Such pairs are the
+  // ancestors of the answer's leaf pair once a near one is found, and on a sheet many GJK runs
+  // are theirs (bench_bands --counters --seed 7, 20 poses, 3 scenes and 4 CGAL pairs: 0-10 % fewer
+  // GJK runs per exact query mid range, 6-15 % far, up to 12 % more node pairs; exact / FCL in
+  // three alternated runs of both binaries, median scene 0.96 of before, far 0.79-1.0, the blade
+  // against the bull 0.87 mid range).
+  if (best_ - bound <= tieSlack_ + roundoff_ && holdsBestPair(a, b)) return -std::numeric_limits<double>::infinity();
   int iterations = 0;
   auto enough = [&](double lowerSafe) { return lowerSafe > bound || ++iterations >= kHullBoundIterations; };
   // Once GJK's simplex comes within `bound` of the origin, the hulls are that near, no support

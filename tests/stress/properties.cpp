@@ -174,6 +174,14 @@ void checkHierarchy(const Mesh& mesh, const std::string& query, std::vector<Fail
     out.push_back({query + ": no hierarchy after buildHierarchy()", mesh.name()});
     return;
   }
+  // positionInOrder must invert order: the traversal reads a node's triangles by it.
+  const std::vector<std::uint32_t>& order = tree->order();
+  const std::vector<std::uint32_t>& position = tree->positionInOrder();
+  bool inverse = order.size() == mesh.triangleCount() && position.size() == order.size();
+  for (std::size_t k = 0; inverse && k < order.size(); ++k) {
+    inverse = order[k] < position.size() && position[order[k]] == k;
+  }
+  if (!inverse) out.push_back({query + ": positionInOrder is not the inverse of order", mesh.name()});
   double worst = 0.0, worstSlack = 0.0, worstOrthogonality = 0.0;
   std::size_t worstNode = 0;
   for (std::size_t i = 0; i < tree->nodes().size(); ++i) {

@@ -109,6 +109,10 @@ class MeshHierarchy {
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<std::uint32_t>& order() const { return order_; }
   const std::vector<std::uint32_t>& leafVertices() const { return leafVertices_; }
+  /// \brief Where each triangle stands in order(): triangle t belongs to node n exactly when
+  /// n.t0 <= positionInOrder()[t] < n.t1 (the traversal asks whether a node pair holds the nearest
+  /// triangle pair found so far).
+  const std::vector<std::uint32_t>& positionInOrder() const { return positionInOrder_; }
   /// \brief Bytes kept between queries (for the memory figure of issue 6).
   std::size_t bytes() const;
   /// \brief Whether the mesh is small (kConvexCheckVertices), closed (every edge in two
@@ -148,6 +152,7 @@ class MeshHierarchy {
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> order_;
   std::vector<std::uint32_t> leafVertices_;
+  std::vector<std::uint32_t> positionInOrder_;
   bool onHullBoundary_ = false;
 };
 
