@@ -28,6 +28,11 @@ const char* toString(DistanceStatus status) {
 }
 
 DistanceScratch::DistanceScratch() : buffers_(std::make_unique<Buffers>()) {}
+DistanceScratch::Buffers& DistanceScratch::buffers() {
+  // A scratch moved from has none; it is usable again, as a moved-from standard container is.
+  if (!buffers_) buffers_ = std::make_unique<Buffers>();
+  return *buffers_;
+}
 DistanceScratch::~DistanceScratch() = default;
 DistanceScratch::DistanceScratch(DistanceScratch&&) noexcept = default;
 DistanceScratch& DistanceScratch::operator=(DistanceScratch&&) noexcept = default;
@@ -413,6 +418,8 @@ DistanceResult Query::finish() const {
 DistanceResult distance(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,
                         const DistanceOptions& options, DistanceScratch& scratch) {
   detail::validate(options, poseA, poseB);
+  detail::requireTriangles(a);
+  detail::requireTriangles(b);
   detail::requireResolvableScene(a, poseA, b, poseB);
   detail::Query query(a, poseA, b, poseB, options, scratch.buffers());
   return query.run();

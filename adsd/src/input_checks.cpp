@@ -66,6 +66,14 @@ void requireRigidPose(const Pose& pose, const char* which) {
   }
 }
 
+void requireTriangles(const Mesh& mesh) {
+  // A Mesh is built with triangles or refused; only one moved from has none, and a query on it
+  // read past its empty arrays (an outside review: a segmentation fault).
+  if (mesh.triangleCount() == 0) {
+    throw InputError("distance query: mesh '" + mesh.name() + "' has no triangles (a Mesh moved from?)");
+  }
+}
+
 void requireResolvableScene(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB) {
   const double extent = a.maxAbsCoordinate() + b.maxAbsCoordinate() +
                         (poseA.translation() - poseB.translation()).cwiseAbs().maxCoeff();

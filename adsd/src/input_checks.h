@@ -13,6 +13,10 @@ namespace adsd::detail {
 /// its translation within +-tolerance::kMaxCoordinate. \p which is "A" or "B".
 void requireRigidPose(const Pose& pose, const char* which);
 
+/// \brief Throws InputError "distance query: mesh '...' has no triangles" for a Mesh moved from
+/// (a Mesh is otherwise never without triangles).
+void requireTriangles(const Mesh& mesh);
+
 /// \brief Throws InputError "distance query: the scene ..." when the meshes, as posed, span less
 /// than tolerance::kMinSceneMagnitude (but more than nothing: meshes that are points at one place
 /// are 0 apart, exactly), measured as the meshes' largest coordinates plus the poses' offset.

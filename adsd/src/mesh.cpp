@@ -60,9 +60,13 @@ Mesh::Mesh(std::vector<Vec3> vertices, std::vector<TriangleIndices> triangles, s
 }
 
 void Mesh::refreshVertexFacts() {
-  maxAbsCoordinate_ = 0.0;
-  for (const Vec3& v : vertices_) maxAbsCoordinate_ = std::max(maxAbsCoordinate_, v.cwiseAbs().maxCoeff());
-  diagonal_ = bounds().diagonal().norm();
+  // Over the vertices the triangles use, as every query's work is: the magnitude scales the
+  // roundoff allowance, and one stray vertex no triangle uses, at 1e30 (a deleted vertex's
+  // marker), made it swamp a unit-sized scene's distance (exact answers 2-4 times the true one,
+  // a false "beyond the cap"), and let a scene too small to resolve past its refusal.
+  const Eigen::AlignedBox3d box = bounds();
+  maxAbsCoordinate_ = std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff());
+  diagonal_ = box.diagonal().norm();
 }
 
 void Mesh::setVertices(const std::vector<Vec3>& vertices) {

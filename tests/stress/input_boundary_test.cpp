@@ -140,6 +140,83 @@ TEST(InputBoundary, ScenesTooSmallToResolveAreRefused) {
 }
 
 // A mirror image is an isometry: the distance is the mirrored meshes', on both query paths.
+/// A gently waved square sheet of 2 n^2 triangles, side 1, at height \p z.
+Mesh wavySheet(double z, int n, const std::string& name) {
+  std::vector<Vec3> vertices;
+  std::vector<TriangleIndices> triangles;
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      const double x = static_cast<double>(i) / n, y = static_cast<double>(j) / n;
+      vertices.emplace_back(x, y, z + 0.04 * std::sin(5.0 * x + 3.0 * y) + 0.03 * std::cos(7.0 * y - 2.0 * x));
+    }
+  }
+  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return Mesh(std::move(vertices), std::move(triangles), name);
+}
+
+// A vertex no triangle uses is no part of the surface, so it must not change what a query
+// answers. A stray one at 1e30 (a deleted vertex's marker) used to set the roundoff allowance's
+// magnitude (an outside review: two sheets 0.0832 apart answered 0.301 from scratch and 0.174 on
+// trees, status exact, and "beyond a cap" of 0.2), and one at 1 let a scene of 1e-45 past the
+// refusal of scenes too small to resolve.
+TEST(InputBoundary, AVertexNoTriangleUsesPlaysNoPartInAQuery) {
+  const Mesh lower = wavySheet(0.0, 12, "lower");
+  const Mesh upperSheet = wavySheet(0.2, 12, "upper");
+  std::vector<Vec3> withStray = upperSheet.vertices();
+  withStray.emplace_back(1e30, 1e30, 1e30);
+  Mesh upper(withStray, upperSheet.triangles(), "upper with a stray vertex");
+  Mesh lowerCopy = lower;
+  const double expected = oracle::meshDistance(lower, Pose::Identity(), upper, Pose::Identity()).value;
+  const double accuracy = 1e-10 * oracle::sceneDiagonal(lower, Pose::Identity(), upperSheet, Pose::Identity());
+  ASSERT_GT(expected, 0.01);
+  for (int round = 0; round < 2; ++round) {
+    const char* path = round == 0 ? "from scratch" : "trees";
+    const DistanceResult exact = distance(lowerCopy, Pose::Identity(), upper, Pose::Identity());
+    EXPECT_NEAR(exact.distance, expected, accuracy) << path;
+    EXPECT_EQ(exact.status, DistanceStatus::exact) << path;
+    const DistanceResult capped =
+        distance(lowerCopy, Pose::Identity(), upper, Pose::Identity(), DistanceOptions::cappedAt(2.0 * expected));
+    EXPECT_EQ(capped.status, DistanceStatus::exact) << path;
+    EXPECT_NEAR(capped.distance, expected, accuracy) << path;
+    const DistanceResult tolerant = distance(lowerCopy, Pose::Identity(), upper, Pose::Identity(),
+                                             DistanceOptions::withTolerance(0.0, 0.01));
+    EXPECT_LE(tolerant.lower, expected + accuracy) << path;
+    EXPECT_GE(tolerant.upper, expected - accuracy) << path;
+    EXPECT_LE(tolerant.upper, 1.01 * tolerant.lower + accuracy) << path;
+    lowerCopy.buildHierarchy();
+    upper.buildHierarchy();
+  }
+  const double s = 1e-45;
+  const Mesh small({Vec3(0, 0, 0), Vec3(s, 0, 0), Vec3(0, s, 0), Vec3(1, 1, 1)}, {{0, 1, 2}}, "small");
+  const Mesh across({Vec3(0.25, 0.25, -0.5) * s, Vec3(0.25, 0.25, 0.5) * s, Vec3(0.5, 0.3, 0.0) * s}, {{0, 1, 2}},
+                    "across");
+  const std::string message = refusal([&] { distance(small, Pose::Identity(), across, Pose::Identity()); });
+  EXPECT_NE(message.find("spans only"), std::string::npos) << message;
+}
+
+// A moved-from scratch is usable again, as a moved-from standard container is, and a moved-from
+// Mesh (no triangles) is refused: both made a query read through a null pointer or past an empty
+// array (an outside review: segmentation faults).
+TEST(InputBoundary, MovedFromScratchIsUsableAndMovedFromMeshIsRefused) {
+  const Mesh a = triangleAt(0.0, "a"), b = triangleAt(3.0, "b");
+  DistanceScratch scratch;
+  DistanceScratch taken(std::move(scratch));
+  const DistanceOptions exact = DistanceOptions::exactDistance();
+  EXPECT_EQ(distance(a, Pose::Identity(), b, Pose::Identity(), exact, scratch).distance, 2.0);
+  EXPECT_EQ(distance(a, Pose::Identity(), b, Pose::Identity(), exact, taken).distance, 2.0);
+  Mesh moved = triangleAt(0.0, "moved");
+  const Mesh kept(std::move(moved));
+  const std::string message = refusal([&] { distance(moved, Pose::Identity(), b, Pose::Identity()); });
+  EXPECT_NE(message.find("has no triangles (a Mesh moved from?)"), std::string::npos) << message;
+  EXPECT_EQ(distance(kept, Pose::Identity(), b, Pose::Identity()).distance, 2.0);
+}
+
 TEST(InputBoundary, MirrorPosesAreMeasuredAsIsometries) {
   oracle::SeededRandom random(77);
   auto randomMesh = [&random](double shift) {

@@ -8,8 +8,9 @@
 ///
 /// Accuracy. "Exact up to rounding" means: every distance, bound and decision of a query is right
 /// within 1e-10 x the scene's bounding-box diagonal + tolerance::kBoundSafetyUlps x eps x M, where
-/// M is the magnitude of the numbers the query works with: sqrt(3) x (largest |coordinate| of A in
-/// A's frame + the same of B) + |translation of B's pose - translation of A's|. The query works in
+/// M is the magnitude of the numbers the query works with: sqrt(3) x (largest |coordinate| of A's
+/// vertices that triangles use, in A's frame, + the same of B) + |translation of B's pose -
+/// translation of A's| (Mesh::maxAbsCoordinate). The query works in
 /// mesh A's frame; B's vertices taken into it round at ulp(M), so when mesh frames lie far from
 /// their geometry (coordinates 1e8 x the scene, posed back next to each other) the second term is
 /// what bounds the error (and the inputs themselves carry no more digits than that). Offsets
@@ -150,7 +151,7 @@ class DistanceScratch {
   DistanceScratch& operator=(DistanceScratch&&) noexcept;
 
   struct Buffers;
-  Buffers& buffers() { return *buffers_; }
+  Buffers& buffers();
 
  private:
   std::unique_ptr<Buffers> buffers_;
@@ -163,7 +164,8 @@ class DistanceScratch {
 /// threshold, non-positive cap) or a pose that is not rigid (non-finite entries, a rotation part
 /// not orthonormal within tolerance::kPoseOrthonormality, a bottom row other than 0 0 0 1) or
 /// whose translation exceeds tolerance::kMaxCoordinate, and for a scene spanning less than
-/// tolerance::kMinSceneMagnitude, where products of its lengths underflow. An orthonormal part of
+/// tolerance::kMinSceneMagnitude, where products of its lengths underflow, and for a Mesh moved
+/// from (no triangles). A DistanceScratch moved from is usable again. An orthonormal part of
 /// determinant -1 (a mirror image, the left part made from the right one's mesh) is an isometry
 /// too, and is taken.
 DistanceResult distance(const Mesh& a, const Pose& poseA, const Mesh& b, const Pose& poseB,

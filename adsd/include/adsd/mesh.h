@@ -59,7 +59,8 @@ class Mesh {
   /// \brief Axis-aligned bounds of the vertices referenced by triangles, in the mesh frame.
   Eigen::AlignedBox3d bounds() const;
 
-  /// \brief Largest |coordinate| of any vertex (mesh frame): the magnitude that scales roundoff.
+  /// \brief Largest |coordinate| of the vertices referenced by triangles (mesh frame): the
+  /// magnitude that scales roundoff. A vertex no triangle uses plays no part in any query.
   double maxAbsCoordinate() const { return maxAbsCoordinate_; }
   /// \brief The length of bounds()' diagonal, kept: queries scale their tie slack by it
   /// (tolerance::kTieSlack); at most sqrt(3) times the diagonal of a scene holding the mesh.
