@@ -778,6 +778,30 @@ TEST(LoadMeshBadInput, PlyHeaderControlCharactersAndFacesWithoutCorners) {
   EXPECT_EQ(loadMesh(dir.write("crlf.ply", crlf)).triangleCount(), 1u);
 }
 
+// Faces whose corners are listed as floats, or with no corner list at all, were skipped, and the
+// file was said to hold no triangles (an outside review): the header says what is wrong.
+TEST(LoadMeshBadInput, PlyFacesWithoutIntegerCornerListsAreNamed) {
+  TempDir dir;
+  const std::string vertices =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\n";
+  const std::string data = "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string floats =
+      loadError(dir.write("floats.ply", vertices + "property list uchar float vertex_indices\n" + data));
+  EXPECT_NE(floats.find("floats.ply:8: the face list vertex_indices holds vertex indices, but its value type "
+                        "'float' is not an integer type"),
+            std::string::npos)
+      << floats;
+  const std::string none = loadError(dir.write("none.ply", vertices + "property list uchar int corners\n" + data));
+  EXPECT_NE(none.find("none.ply: the PLY header's element face (1 faces) has no 'property list <count type> <index "
+                      "type> vertex_indices' (or vertex_index)"),
+            std::string::npos)
+      << none;
+  EXPECT_EQ(loadMesh(dir.write("fine.ply", vertices + "property list uchar uint vertex_indices\n" + data))
+                .triangleCount(),
+            1u);
+}
+
 // Fuzz finding (tests/fuzz/regressions/mesh_loader/collada_quote_in_index_list_oom): one '"' in an
 // index list made assimp append zero indices until memory ran out (12.6 GB on a 1.3 KB file).
 TEST(LoadMeshBadInput, ColladaIndexListThatAssimpWouldReadForever) {

@@ -163,6 +163,11 @@ class PlyChecker {
           if (p.countType.bytes == 0 || !p.countType.isInteger) {
             throw InputError(at() + "list count type " + quoteToken(t[2]) + " is not an integer type");
           }
+          // Corners listed as floats were skipped, and the file read as one with no triangles.
+          if (isVertexIndexList(elements_.back(), p) && p.valueType.bytes != 0 && !p.valueType.isInteger) {
+            throw InputError(at() + "the face list " + p.name + " holds vertex indices, but its value type " +
+                             quoteToken(t[3]) + " is not an integer type");
+          }
         } else if (t.size() == 3) {
           p.valueType = scalarType(t[1]);
           p.name = std::string(t[2]);
@@ -183,6 +188,15 @@ class PlyChecker {
       // "comment"; assimp's own test model Wuson.ply has one).
     }
     if (!formatSeen) throw InputError(path_ + ": the PLY header has no format line");
+    // Faces without a corner list were skipped, and the file read as one with no triangles.
+    for (const Element& e : elements_) {
+      const auto corners = [&e](const Property& p) { return isVertexIndexList(e, p); };
+      if (e.name == "face" && e.count > 0 && std::none_of(e.properties.begin(), e.properties.end(), corners)) {
+        throw InputError(path_ + ": the PLY header's element face (" + std::to_string(e.count) +
+                         " faces) has no 'property list <count type> <index type> vertex_indices' (or " +
+                         "vertex_index): its faces have no corners");
+      }
+    }
     dataOffset_ = lines_.offset();
   }
 
