@@ -39,10 +39,11 @@ constexpr const char* kDescription =
     "<disable_collisions> entries (MoveIt's format, which an arm problem names with `srdf = FILE`):\n"
     "the pairs its kinematic tree joins (reason Adjacent: a parent and its child, links joined by\n"
     "fixed joints), the pairs in contact in the default pose (reason Default: every joint at 0, or\n"
-    "at its nearer limit), and the pairs in contact in every one of N random joint states (reason\n"
-    "Always: they touch by design, at any joint values), as MoveIt's setup assistant does. With\n"
-    "--never, also the pairs in contact in none of them (reason Never). Default and Never are\n"
-    "guesses: such a pair may still collide in other states, which the checker would then miss.";
+    "at the midpoint of its limits when they exclude 0), and the pairs in contact in every one of\n"
+    "N random joint states (reason Always: they touch by design, at any joint values), as MoveIt's\n"
+    "setup assistant does. With --never, also the pairs in contact in none of them (reason\n"
+    "Never). Default and Never are guesses: such a pair may still collide in other states, which\n"
+    "the checker would then miss.";
 constexpr const char* kDetails =
     "States are drawn uniformly within the joint limits (continuous joints in [-pi, pi]); contact is\n"
     "our distance query at threshold 0 on the links' collision meshes. Prints each Default and\n"

@@ -33,6 +33,11 @@ std::size_t ArmModel::jointIndex(const std::string& jointName) const {
   throw InputError(sourceFile + ": no movable joint named '" + jointName + "'");
 }
 
+double defaultPosition(const ArmJoint& joint) {
+  if (joint.type == ArmJointType::continuous || (joint.lower <= 0.0 && 0.0 <= joint.upper)) return 0.0;
+  return 0.5 * (joint.lower + joint.upper);
+}
+
 std::pair<double, double> ArmModel::positionRange(const ArmJoint& joint) const {
   // A joint held outside the planning group (holdJointsOutside) stands within its limits.
   if (joint.locked) return {joint.lockedPosition, joint.lockedPosition};
@@ -354,6 +359,21 @@ ArmJoint convertJoint(const urdf::Joint& uj, std::size_t parentLink, std::size_t
       got << "[" << j.lower << ", " << j.upper << "]";
       throw InputError(where + ": <limit lower= upper=> must be finite, within 1e75, with lower <= upper, got " +
                        got.str());
+    }
+    // MoveIt plans within a joint's <safety_controller> soft limits where it has one, cut to its
+    // <limit> (its RobotModel's bounds from the URDF): a path between the two is one the robot's
+    // controller would stop. urdfdom reads an absent soft limit as 0, and MoveIt takes that too.
+    if (uj.safety) {
+      const double softLower = uj.safety->soft_lower_limit, softUpper = uj.safety->soft_upper_limit;
+      const double lower = std::max(j.lower, softLower), upper = std::min(j.upper, softUpper);
+      if (!std::isfinite(softLower) || !std::isfinite(softUpper) || !(lower <= upper)) {
+        std::ostringstream got;
+        got << "[" << softLower << ", " << softUpper << "] and [" << j.lower << ", " << j.upper << "]";
+        throw InputError(where + ": its <safety_controller soft_lower_limit= soft_upper_limit=> and <limit> must " +
+                         "share a range (MoveIt plans within both), got " + got.str());
+      }
+      j.lower = lower;
+      j.upper = upper;
     }
   }
   return j;

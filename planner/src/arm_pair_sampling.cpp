@@ -54,8 +54,7 @@ PairSamplingResult disablePairsBySampling(const ArmModel& model, ArmCollisionPai
 std::vector<double> defaultJointVector(const ArmModel& model) {
   std::vector<double> q(model.dof());
   for (std::size_t i = 0; i < q.size(); ++i) {
-    const ArmJoint& joint = model.joints[model.activeJoints[i]];
-    q[i] = std::clamp(0.0, joint.lower, joint.upper);
+    q[i] = defaultPosition(model.joints[model.activeJoints[i]]);
   }
   return q;
 }

@@ -204,8 +204,7 @@ ArmPlanningProblem::ArmPlanningProblem(const MotionBenchMakerProblem& file, cons
                        joint.name + "' of robot '" + model_->name + "' (neither the request's start_state nor the " +
                        "scene's robot_state gives one; the start_state names " + unknown + ", which the robot lacks)");
     } else {
-      const bool zeroAllowed = joint.type == ArmJointType::continuous || (joint.lower <= 0.0 && 0.0 <= joint.upper);
-      start_[i] = zeroAllowed ? 0.0 : 0.5 * (joint.lower + joint.upper);
+      start_[i] = defaultPosition(joint);
       std::ostringstream value;
       value << start_[i];
       defaulted += (defaulted.empty() ? "" : ", ") + joint.name + " = " + value.str();

@@ -541,6 +541,80 @@ TEST(ArmModel, JointOriginAndLimitsOutOfRangeAreRefusedNamingTheJoint) {
   EXPECT_EQ(readUrdf(dir.write("fine.urdf", robot(R"(<origin xyz="1e6 0 0"/>)", limit))).joints[0].upper, 1.0);
 }
 
+// MoveIt bounds a joint by its <safety_controller>'s soft limits within <limit> (an outside
+// review: a goal between the two, which MoveIt would refuse, was planned to). An absent soft limit
+// reads 0 (urdfdom), and soft limits that leave nothing of <limit> are refused.
+TEST(ArmModel, SafetyControllerSoftLimitsBoundTheJoint) {
+  test::ScratchDir dir;
+  const auto robot = [](const std::string& type, const std::string& safety) {
+    return "<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n<joint name=\"j\" type=\"" + type +
+           "\">\n<parent link=\"a\"/><child link=\"b\"/>\n<axis xyz=\"1 0 0\"/>\n"
+           "<limit lower=\"-0.4\" upper=\"2.5\" effort=\"1\" velocity=\"1\"/>\n" + safety + "\n</joint>\n</robot>\n";
+  };
+  const auto range = [&](const std::string& type, const std::string& safety) {
+    const ArmModel m = readUrdf(dir.write("safe.urdf", robot(type, safety)));
+    return std::make_pair(m.joints[0].lower, m.joints[0].upper);
+  };
+  using Range = std::pair<double, double>;
+  EXPECT_EQ(range("revolute", ""), Range(-0.4, 2.5));
+  EXPECT_EQ(range("revolute", R"(<safety_controller soft_lower_limit="0.9" soft_upper_limit="3" k_velocity="1"/>)"),
+            Range(0.9, 2.5));
+  EXPECT_EQ(range("prismatic", R"(<safety_controller soft_lower_limit="-2" soft_upper_limit="1" k_velocity="1"/>)"),
+            Range(-0.4, 1.0));
+  EXPECT_EQ(range("revolute", R"(<safety_controller soft_upper_limit="1" k_velocity="1"/>)"), Range(0.0, 1.0));
+  const std::string path =
+      dir.write("apart.urdf", robot("revolute", R"(<safety_controller soft_lower_limit="3" soft_upper_limit="4" )"
+                                                R"(k_velocity="1"/>)"));
+  try {
+    readUrdf(path);
+    ADD_FAILURE() << "soft limits beyond <limit>: no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":4: joint 'j': its <safety_controller soft_lower_limit= "
+                                            "soft_upper_limit=> and <limit> must share a range (MoveIt plans within "
+                                            "both), got [3, 4] and [-0.4, 2.5]");
+  }
+}
+
+// MoveIt's default state, which `adsd srdf` tests for reason Default and `adsd plan` starts
+// unnamed joints at, puts a joint whose limits exclude 0 at their midpoint (an outside review:
+// the nearer limit, where two links overlapped that the midpoint keeps apart, disabled a pair that
+// does collide).
+TEST(ArmModel, DefaultPositionIsZeroOrTheMidpointOfTheLimits) {
+  ArmJoint joint;
+  joint.type = ArmJointType::revolute;
+  joint.lower = 0.5, joint.upper = 2.5;
+  EXPECT_EQ(defaultPosition(joint), 1.5);
+  joint.lower = -3.07, joint.upper = -0.07;
+  EXPECT_DOUBLE_EQ(defaultPosition(joint), -1.57);
+  joint.lower = -1.0, joint.upper = 2.0;
+  EXPECT_EQ(defaultPosition(joint), 0.0);
+  joint.type = ArmJointType::continuous;
+  joint.lower = -kPi, joint.upper = kPi;
+  EXPECT_EQ(defaultPosition(joint), 0.0);
+  // A bar that dips into the base's box at its lower limit (0.6 rad: its tip 0.578 out, 0.005 up)
+  // and hangs clear of it at the midpoint (1.5 rad): the pair is in contact only at the limit.
+  test::ScratchDir dir;
+  const ArmModel m = readUrdf(dir.write("dip.urdf", R"(<robot name="dip">
+  <link name="base"><collision><origin xyz="0.5 0 0.05"/><geometry><box size="0.3 0.3 0.1"/></geometry></collision>
+  </link>
+  <joint name="turn" type="revolute"><parent link="base"/><child link="post"/><origin xyz="0 0 0.4"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <link name="post"><collision><geometry><sphere radius="0.02"/></geometry></collision></link>
+  <joint name="tilt" type="revolute"><parent link="post"/><child link="bar"/>
+    <axis xyz="0 1 0"/><limit lower="0.6" upper="2.4" effort="1" velocity="1"/></joint>
+  <link name="bar"><collision><origin xyz="0.35 0 0"/><geometry><box size="0.7 0.03 0.03"/></geometry></collision>
+  </link>
+</robot>
+)"));
+  EXPECT_EQ(defaultJointVector(m), std::vector<double>({0.0, 1.5}));
+  ArmCollisionPairs atDefault(m), atLimit(m);
+  const std::size_t base = m.linkIndex("base"), bar = m.linkIndex("bar");
+  EXPECT_EQ(disablePairsInContactAt(m, atDefault, defaultJointVector(m)), 0u);
+  EXPECT_TRUE(atDefault.enabled(base, bar));
+  EXPECT_EQ(disablePairsInContactAt(m, atLimit, {0.0, 0.6}), 1u);
+  EXPECT_FALSE(atLimit.enabled(base, bar));
+}
+
 // Adversarial review: offsets of 1e75 each, down a chain of three joints, placed the tip at 3e75.
 // The distance query refused it naming neither the file nor the joint, after `adsd plan` had
 // printed "solved yes". The sum is bounded when the URDF is read; so is a prismatic joint's travel.

@@ -33,10 +33,10 @@ namespace fs = std::filesystem;
 //   sleeve  revolute `yaw` about z from (0, 0, 0.5), [0, 2]: a bar 3 x 0.1 x 0.1 along x, 0.8 off
 //           the axis (y = 0.8 at yaw 0). It meets the slider and the inner ball only when the
 //           slider is far out and the yaw near pi/2 (never at the default pose, yaw 0).
-//   flag    revolute `wave` about z from (0.8, 0, 0.05), [0.05, 1.5] (its default, 0 clamped into
-//           the limits, is 0.05): a bar 0.8 x 0.05 x 0.05 pointing back towards the origin at
-//           z 0.375-0.425. At the default pose it reaches under the slider's bottom face (z 0.4)
-//           0.035 off the x axis; swung away or with the slider moved, it clears it.
+//   flag    revolute `wave` about z from (0.8, 0, 0.05), [0.02, 0.12] (its default, MoveIt's
+//           midpoint of limits that exclude 0, is 0.07): a bar 0.8 x 0.05 x 0.05 pointing back
+//           towards the origin at z 0.375-0.425. At the default pose it reaches under the slider's
+//           bottom face (z 0.4) 0.056 off the x axis; with the slider moved out, it clears it.
 const char* kRobot = R"(<?xml version="1.0"?>
 <robot name="judged">
   <link name="base"><collision><geometry><box size="2 2 0.1"/></geometry></collision></link>
@@ -55,7 +55,7 @@ const char* kRobot = R"(<?xml version="1.0"?>
   <joint name="yaw" type="revolute"><parent link="base"/><child link="sleeve"/><origin xyz="0 0 0.5"/>
     <axis xyz="0 0 1"/><limit lower="0" upper="2" effort="1" velocity="1"/></joint>
   <joint name="wave" type="revolute"><parent link="base"/><child link="flag"/><origin xyz="0.8 0 0.05"/>
-    <axis xyz="0 0 1"/><limit lower="0.05" upper="1.5" effort="1" velocity="1"/></joint>
+    <axis xyz="0 0 1"/><limit lower="0.02" upper="0.12" effort="1" velocity="1"/></joint>
 </robot>
 )";
 
@@ -136,8 +136,8 @@ TEST(SrdfCommand, ArmProblemStartingInTheDefaultPoseIsSolvedWithTheWrittenSrdf) 
   std::ofstream(dir / "scene.yaml") << "name: empty\nworld:\n  collision_objects: []\n";
   std::ofstream(dir / "request.yaml")
       << "group_name: all\nstart_state:\n  joint_state:\n    name: [slide, tilt, wrist, yaw, wave]\n"
-         "    position: [0, 0, 0, 0, 0.05]\ngoal_constraints:\n  - joint_constraints:\n"
-         "      - {joint_name: wave, position: 1.2, tolerance_above: 0.001, tolerance_below: 0.001}\n";
+         "    position: [0, 0, 0, 0, 0.07]\ngoal_constraints:\n  - joint_constraints:\n"
+         "      - {joint_name: slide, position: -0.9, tolerance_above: 0.001, tolerance_below: 0.001}\n";
   const std::string cfg = "[problem]\nname = judged\nrobot = judged.urdf\nscene = scene.yaml\nrequest = request.yaml\n";
   std::ofstream(dir / "without.cfg") << cfg;
   std::ofstream(dir / "with.cfg") << cfg << "srdf = judged.srdf\n";

@@ -52,6 +52,11 @@ struct ArmJoint {
   std::string mimics;
 };
 
+/// \brief Where MoveIt's default state puts \p joint (RevoluteJointModel's and
+/// PrismaticJointModel's default positions): 0 where its limits allow, as a continuous joint's
+/// always do, else the midpoint of its limits.
+double defaultPosition(const ArmJoint& joint);
+
 /// \brief One link: its name, the joint that carries it, and its collision geometry.
 struct ArmLink {
   std::string name;

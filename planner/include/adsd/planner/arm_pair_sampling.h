@@ -36,8 +36,9 @@ struct PairSamplingResult {
 PairSamplingResult disablePairsBySampling(const ArmModel& model, ArmCollisionPairs& pairs, std::size_t states,
                                           std::uint64_t seed = 1, NeverInContact never = NeverInContact::disable);
 
-/// \brief The default joint vector, as MoveIt's setup assistant takes it: every joint at 0, or
-/// at the nearer limit when 0 lies outside its limits.
+/// \brief The default joint vector, as MoveIt's setup assistant takes it (the robot's default
+/// state): every joint at 0, or at the midpoint of its limits when 0 lies outside them
+/// (defaultPosition).
 std::vector<double> defaultJointVector(const ArmModel& model);
 
 /// \brief Disables the enabled pairs of \p pairs in contact at joint vector \p q (our threshold
