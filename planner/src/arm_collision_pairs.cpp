@@ -121,20 +121,47 @@ std::vector<std::string> disablePairsFromSrdf(const ArmModel& model, const std::
     warnings.push_back(srdfPath + ":" + std::to_string(robot->Row()) + ": the SRDF is for robot '" + name +
                        "', the URDF " + model.sourceFile + " is robot '" + model.name + "' (read on, as MoveIt does)");
   }
-  for (const TiXmlElement* e = robot->FirstChildElement("disable_collisions"); e;
-       e = e->NextSiblingElement("disable_collisions")) {
+  // A pair element's two links, as indices of the model.
+  const auto linkPair = [&](const TiXmlElement* e) {
     const std::string where = srdfPath + ":" + std::to_string(e->Row());
     const char* link1 = e->Attribute("link1");
     const char* link2 = e->Attribute("link2");
-    if (!link1 || !link2) throw InputError(where + ": <disable_collisions> needs link1= and link2=");
-    std::size_t a = 0, b = 0;
+    if (!link1 || !link2) throw InputError(where + ": <" + e->Value() + "> needs link1= and link2=");
     try {
-      a = model.linkIndex(link1);
-      b = model.linkIndex(link2);
+      return std::make_pair(model.linkIndex(link1), model.linkIndex(link2));
     } catch (const InputError&) {
-      throw InputError(where + ": <disable_collisions> names a link that " + model.sourceFile + " lacks ('" + link1 +
+      throw InputError(where + ": <" + e->Value() + "> names a link that " + model.sourceFile + " lacks ('" + link1 +
                        "', '" + link2 + "')");
     }
+  };
+  // MoveIt's allowed collision matrix from an SRDF: a link of <disable_default_collisions> is
+  // unchecked against every other link but the pairs <enable_collisions> names, and the pairs of
+  // <disable_collisions> are unchecked in any case (applied last).
+  const std::size_t n = model.links.size();
+  std::vector<bool> reenabled(n * n, false);
+  for (const TiXmlElement* e = robot->FirstChildElement("enable_collisions"); e;
+       e = e->NextSiblingElement("enable_collisions")) {
+    const auto [a, b] = linkPair(e);
+    reenabled[a * n + b] = reenabled[b * n + a] = true;
+  }
+  for (const TiXmlElement* e = robot->FirstChildElement("disable_default_collisions"); e;
+       e = e->NextSiblingElement("disable_default_collisions")) {
+    const std::string where = srdfPath + ":" + std::to_string(e->Row()) + ": <disable_default_collisions>";
+    const char* link = e->Attribute("link");
+    if (!link) throw InputError(where + " needs link=");
+    std::size_t a = 0;
+    try {
+      a = model.linkIndex(link);
+    } catch (const InputError&) {
+      throw InputError(where + " names a link that " + model.sourceFile + " lacks ('" + link + "')");
+    }
+    for (std::size_t b = 0; b < n; ++b) {
+      if (b != a && !reenabled[a * n + b]) pairs.disable(a, b, "SRDF default");
+    }
+  }
+  for (const TiXmlElement* e = robot->FirstChildElement("disable_collisions"); e;
+       e = e->NextSiblingElement("disable_collisions")) {
+    const auto [a, b] = linkPair(e);
     const char* reason = e->Attribute("reason");
     if (a != b) pairs.disable(a, b, reason ? reason : "SRDF");
   }

@@ -232,6 +232,37 @@ TEST(ArmCollisionPairs, SrdfDisablesItsPairsAndRoundTrips) {
   EXPECT_THROW(disablePairsFromSrdf(m, dir.path("absent.srdf"), pairs), InputError);
 }
 
+// MoveIt's SRDF elements for a link unchecked by default (an outside review: they were ignored
+// without a word, so a goal MoveIt takes was refused as in collision):
+// <disable_default_collisions> leaves every pair of the link unchecked but those
+// <enable_collisions> names; <disable_collisions> pairs stay unchecked whatever else is said.
+TEST(ArmCollisionPairs, SrdfDefaultDisabledLinksAndReenabledPairs) {
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));  // base 0, carriage 1, arm 2, tip 3
+  test::ScratchDir dir;
+  const auto enabledWith = [&](const std::string& body) {
+    ArmCollisionPairs pairs(m);
+    disablePairsFromSrdf(m, dir.write("d.srdf", "<robot name=\"slider_arm\">" + body + "</robot>"), pairs);
+    return pairs.enabledPairs();
+  };
+  using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
+  EXPECT_EQ(enabledWith(""), Pairs({{0, 2}, {0, 3}, {1, 3}}));  // all but the adjacent pairs
+  EXPECT_EQ(enabledWith(R"(<disable_default_collisions link="tip"/>)"), Pairs({{0, 2}}));
+  EXPECT_EQ(enabledWith(R"(<disable_default_collisions link="tip"/><enable_collisions link1="tip" link2="carriage"/>)"),
+            Pairs({{0, 2}, {1, 3}}));
+  EXPECT_EQ(enabledWith(R"(<enable_collisions link1="base" link2="arm"/><disable_collisions link1="arm" )"
+                        R"(link2="base"/>)"),
+            Pairs({{0, 3}, {1, 3}}));
+  const std::string bad = dir.write("bad.srdf", "<robot>\n<disable_default_collisions link=\"nope\"/></robot>");
+  ArmCollisionPairs pairs(m);
+  try {
+    disablePairsFromSrdf(m, bad, pairs);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.srdf:2: <disable_default_collisions> names a link"), std::string::npos)
+        << e.what();
+  }
+}
+
 // A URDF named as the SRDF was read as an SRDF disabling nothing, and an SRDF of another robot
 // without a word (adversarial sweep): the first is refused, the second warned of, as MoveIt does.
 TEST(ArmCollisionPairs, SrdfThatIsAUrdfOrOfAnotherRobot) {

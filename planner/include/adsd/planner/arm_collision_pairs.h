@@ -49,8 +49,10 @@ class ArmCollisionPairs {
 /// fold into the forearm the wrist turns on, and that pair stays checked.
 std::vector<std::pair<std::size_t, std::size_t>> adjacentLinkPairs(const ArmModel& model);
 
-/// \brief Disables every pair of an SRDF file's `<disable_collisions link1="" link2="" reason=""/>`
-/// entries (MoveIt's format; other elements are ignored). Throws adsd::InputError naming the file
+/// \brief Disables the pairs an SRDF file leaves unchecked, as MoveIt's allowed collision matrix
+/// does: every `<disable_collisions link1="" link2="" reason=""/>` pair, and every pair of a
+/// `<disable_default_collisions link=""/>` link but those `<enable_collisions link1="" link2=""/>`
+/// names (other elements are ignored). Throws adsd::InputError naming the file
 /// and line when it is not XML, has no `<robot>` element, is a URDF (its `<robot>` has `<link>`
 /// elements), or names a link the model lacks. Returns its warnings, one line each: a `<robot
 /// name="">` other than the model's (MoveIt logs that as an error and reads on).
