@@ -92,6 +92,15 @@ UrdfOutline checkTreeShape(const std::string& path, const std::string& text) {
     std::vector<int>& lines = outline.collisionLines[name];
     for (const TiXmlElement* c = l->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision")) {
       lines.push_back(c->Row());
+      // urdfdom reads the first shape of a <geometry> and drops the others without a word (as
+      // MoveIt then does): a box after a sphere went unchecked (an outside review).
+      const TiXmlElement* geometry = c->FirstChildElement("geometry");
+      const TiXmlElement* shape = geometry ? geometry->FirstChildElement() : nullptr;
+      if (shape && shape->NextSiblingElement()) {
+        throw InputError(path + ":" + std::to_string(shape->NextSiblingElement()->Row()) + ": link '" + name +
+                         "': a second shape in one <geometry>, which urdfdom would drop; give each shape a " +
+                         "<collision> element of its own");
+      }
     }
   }
   if (linkNames.empty()) throw InputError(path + ": no <link> elements: a robot needs at least one link");

@@ -502,6 +502,16 @@ TEST(ArmModel, CollisionElementsUrdfdomCannotReadAreRefused) {
     }
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << collision;
   }
+  // Two shapes in one <geometry>: urdfdom keeps the first and drops the second without a word.
+  const std::string twoShapes = dir.write(
+      "two.urdf", robot("<collision><geometry><sphere radius=\"0.1\"/>\n<box size=\"2 2 2\"/></geometry></collision>"));
+  try {
+    readUrdf(twoShapes);
+    ADD_FAILURE() << "two shapes in one <geometry>: no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), twoShapes + ":5: link 'a': a second shape in one <geometry>, which urdfdom "
+                                                 "would drop; give each shape a <collision> element of its own");
+  }
 }
 
 // Collision geometry placed or scaled out of range, or scaled to nothing: named by the URDF, the
