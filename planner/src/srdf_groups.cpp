@@ -59,17 +59,30 @@ void collectGroup(const ArmModel& model, const std::string& srdfPath, const TiXm
       const int parent = model.links[linkNamed(e, attribute(e, "name"))].parentJoint;
       if (parent >= 0) joints.insert(static_cast<std::size_t>(parent));
     } else if (kind == "chain") {
-      // The joints from the tip up to the base: links come depth first, each after its parent.
+      // The joints on the tree's path between the two links: up from the tip to the first link
+      // the base is below (the base itself for an arm's chain), and up from the base to that
+      // link. A chain from one hand to the other goes through the torso, as in MoveIt (an outside
+      // review: it was refused, the tip not being below the base).
       const std::size_t base = linkNamed(e, attribute(e, "base_link"));
-      std::size_t link = linkNamed(e, attribute(e, "tip_link"));
-      while (link != base) {
+      const std::size_t tip = linkNamed(e, attribute(e, "tip_link"));
+      const auto up = [&model](std::size_t link) {
         const int parent = model.links[link].parentJoint;
-        if (parent < 0) {
-          throw InputError(where(e) + "chain: link '" + model.links[link].name + "' is not below link '" +
-                           model.links[base].name + "'");
+        return parent < 0 ? link : model.joints[static_cast<std::size_t>(parent)].parentLink;
+      };
+      std::set<std::size_t> aboveBase = {base};
+      for (std::size_t link = base; model.links[link].parentJoint >= 0;) aboveBase.insert(link = up(link));
+      std::size_t meet = tip;
+      while (!aboveBase.count(meet)) {
+        const int parent = model.links[meet].parentJoint;
+        if (parent < 0) {  // readUrdf leaves one root, so the two always meet
+          throw InputError(where(e) + "chain: links '" + model.links[tip].name + "' and '" + model.links[base].name +
+                           "' are in no one tree");
         }
         joints.insert(static_cast<std::size_t>(parent));
-        link = model.joints[static_cast<std::size_t>(parent)].parentLink;
+        meet = up(meet);
+      }
+      for (std::size_t link = base; link != meet; link = up(link)) {
+        joints.insert(static_cast<std::size_t>(model.links[link].parentJoint));
       }
     } else if (kind == "group") {
       const std::string name = attribute(e, "name");

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -19,6 +20,7 @@
 #include "adsd/planner/arm_pair_sampling.h"
 #include "adsd/planner/arm_state_space.h"
 #include "adsd/planner/primitive_meshes.h"
+#include "adsd/planner/srdf_groups.h"
 #include "arm_test_data.h"
 #include "scratch_dir.h"
 
@@ -261,6 +263,36 @@ TEST(ArmCollisionPairs, SrdfDefaultDisabledLinksAndReenabledPairs) {
     EXPECT_NE(std::string(e.what()).find("bad.srdf:2: <disable_default_collisions> names a link"), std::string::npos)
         << e.what();
   }
+}
+
+// An SRDF <chain> is the tree's path between its two links, up through their common ancestor when
+// neither is below the other (MoveIt's hand-to-hand chains: an outside review found one refused).
+TEST(SrdfGroups, ChainIsThePathBetweenItsLinks) {
+  test::ScratchDir dir;
+  const auto joint = [](const char* name, const char* parent, const char* child) {
+    return std::string("<joint name=\"") + name + "\" type=\"revolute\"><parent link=\"" + parent +
+           "\"/><child link=\"" + child + "\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" "
+           "effort=\"1\" velocity=\"1\"/></joint>\n";
+  };
+  std::string urdf = "<robot name=\"y\">\n";
+  for (const char* link : {"torso", "upperL", "handL", "upperR", "handR", "head"}) {
+    urdf += std::string("<link name=\"") + link + "\"/>\n";
+  }
+  urdf += joint("shoulderL", "torso", "upperL") + joint("elbowL", "upperL", "handL") +
+          joint("shoulderR", "torso", "upperR") + joint("elbowR", "upperR", "handR") + joint("neck", "torso", "head");
+  const ArmModel m = readUrdf(dir.write("y.urdf", urdf + "</robot>\n"));
+  const auto chain = [&](const std::string& base, const std::string& tip) {
+    const std::string srdf = dir.write("y.srdf", "<robot name=\"y\"><group name=\"g\"><chain base_link=\"" + base +
+                                                     "\" tip_link=\"" + tip + "\"/></group></robot>\n");
+    std::vector<std::string> names = srdfGroupJoints(m, srdf, "g").value();
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(chain("torso", "handL"), Names({"elbowL", "shoulderL"}));
+  EXPECT_EQ(chain("handL", "handR"), Names({"elbowL", "elbowR", "shoulderL", "shoulderR"}));
+  EXPECT_EQ(chain("upperL", "handR"), Names({"elbowR", "shoulderL", "shoulderR"}));
+  EXPECT_THROW(chain("head", "head"), InputError);  // no joint: a group that moves nothing
 }
 
 // A URDF named as the SRDF was read as an SRDF disabling nothing, and an SRDF of another robot

@@ -13,11 +13,12 @@ namespace adsd::planner {
 
 /// \brief The joint-vector joints of \p model in planning group \p group as the SRDF file
 /// \p srdfPath defines it (MoveIt's `<group name="">`: each `<joint name="">`, the joints along each
-/// `<chain base_link="" tip_link="">`, the joint that carries each `<link name="">`, and the joints
-/// of each `<group name="">` it includes), in joint-vector order; std::nullopt when the file defines
-/// no group of that name. Throws adsd::InputError naming the file and line for a joint, link or
-/// group that the robot or the file lacks, a chain whose tip is not below its base, groups that
-/// include each other, or a group with no movable joint.
+/// `<chain base_link="" tip_link="">`, the tree's path between the two, through their common
+/// ancestor when neither is below the other, the joint that carries each `<link name="">`, and the
+/// joints of each `<group name="">` it includes), in joint-vector order; std::nullopt when the file
+/// defines no group of that name. Throws adsd::InputError naming the file and line for a joint,
+/// link or group that the robot or the file lacks, groups that include each other, or a group with
+/// no movable joint.
 std::optional<std::vector<std::string>> srdfGroupJoints(const ArmModel& model, const std::string& srdfPath,
                                                         const std::string& group);
 
