@@ -174,7 +174,7 @@ void checkHierarchy(const Mesh& mesh, const std::string& query, std::vector<Fail
     out.push_back({query + ": no hierarchy after buildHierarchy()", mesh.name()});
     return;
   }
-  // positionInOrder must invert order: the traversal reads a node's triangles by it.
+  // positionInOrder must invert order: the traversal asks by it whether a node holds a triangle.
   const std::vector<std::uint32_t>& order = tree->order();
   const std::vector<std::uint32_t>& position = tree->positionInOrder();
   bool inverse = order.size() == mesh.triangleCount() && position.size() == order.size();
