@@ -132,6 +132,28 @@ std::string lowerCaseExtension(const std::string& path) {
   return ext;
 }
 
+std::string wideTextEncoding(std::string_view bytes) {
+  const auto startsWith = [&](std::string_view mark) { return bytes.substr(0, mark.size()) == mark; };
+  // UTF-32LE's mark begins with UTF-16LE's, so it is asked first.
+  if (startsWith(std::string_view("\xFF\xFE\0\0", 4))) return "UTF-32LE";
+  if (startsWith(std::string_view("\0\0\xFE\xFF", 4))) return "UTF-32BE";
+  if (startsWith("\xFF\xFE")) return "UTF-16LE";
+  if (startsWith("\xFE\xFF")) return "UTF-16BE";
+  return {};
+}
+
+void requireNarrowText(const std::string& path, std::string_view bytes, MeshReader reader) {
+  const std::string encoding = wideTextEncoding(bytes);
+  if (encoding.empty()) return;
+  if (reader == MeshReader::stl && bytes.size() >= kStlPreambleBytes) {
+    std::uint32_t count = 0;
+    for (int i = 3; i >= 0; --i) count = count << 8 | static_cast<unsigned char>(bytes[kStlHeaderBytes + i]);
+    if (bytes.size() == kStlPreambleBytes + kStlBytesPerTriangle * std::uintmax_t{count}) return;
+  }
+  throw InputError(path + ": the text is " + encoding + " (it starts with that byte-order mark); mesh files are " +
+                   "read as ASCII or UTF-8: convert it, e.g. iconv -f " + encoding.substr(0, 6) + " -t UTF-8");
+}
+
 MeshReader chooseReader(const std::string& path, std::string_view bytes) {
   const std::string ext = lowerCaseExtension(path);
   if (ext == ".obj") return MeshReader::obj;

@@ -29,6 +29,11 @@ bool isBinaryStl(std::string_view head);
 /// header promises (a cut-off download or copy is the usual cause, and the message says so).
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes);
 
+/// \brief The encoding a byte-order mark at the start of \p bytes names when it is a wide one
+/// ("UTF-16LE", "UTF-16BE", "UTF-32LE", "UTF-32BE"), else empty: text the readers take for ASCII
+/// or UTF-8 reads as NUL bytes between the characters, in which no keyword is found.
+std::string wideTextEncoding(std::string_view bytes);
+
 /// \brief The extension of \p path in lower case, with its dot (".obj"); empty if it has none.
 std::string lowerCaseExtension(const std::string& path);
 
@@ -41,6 +46,11 @@ enum class MeshReader { obj, off, ply, stl, assimp };
 /// Only what has none of these goes to assimp: above all no PLY, which assimp's reader can
 /// crash, hang or abort on (the fuzz findings in ply_reader.cpp) whatever the file is called.
 MeshReader chooseReader(const std::string& path, std::string_view bytes);
+
+/// \brief Throws InputError "PATH: ..." naming the encoding and how to convert the file when
+/// \p bytes, to be read by \p reader, start with a wide byte-order mark (a binary STL of the
+/// exact size its header promises is binary, whatever its first bytes).
+void requireNarrowText(const std::string& path, std::string_view bytes, MeshReader reader);
 
 /// \brief Whether the first word of \p text, past blank and comment lines, is an OFF keyword
 /// (OFF, COFF, NOFF, STOFF, 4OFF, ...). In off_reader.cpp.

@@ -6,6 +6,7 @@
 #include <limits>
 #include <new>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -42,7 +43,8 @@ std::string oneLine(std::string text) {
 std::string quoted(const aiString& name) { return "'" + oneLine(name.C_Str()) + "'"; }
 
 
-Affine toAffine(const aiMatrix4x4& m, const std::string& path, const aiNode& node) {
+/// \p m as an affine map; \p what names the matrix in messages ("node 'arm'").
+Affine toAffine(const aiMatrix4x4& m, const std::string& path, const std::string& what) {
   const double entries[4][4] = {{m.a1, m.a2, m.a3, m.a4},
                                 {m.b1, m.b2, m.b3, m.b4},
                                 {m.c1, m.c2, m.c3, m.c4},
@@ -51,14 +53,81 @@ Affine toAffine(const aiMatrix4x4& m, const std::string& path, const aiNode& nod
   for (int r = 0; r < 4; ++r) {
     for (int c = 0; c < 4; ++c) matrix(r, c) = entries[r][c];
   }
-  const std::string nodeName = "node " + quoted(node.mName);
-  if (!matrix.allFinite()) throw InputError(path + ": " + nodeName + " has a non-finite transform entry");
+  if (!matrix.allFinite()) throw InputError(path + ": " + what + " has a non-finite transform entry");
   if ((matrix.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > kAffineBottomRowTolerance) {
-    throw InputError(path + ": " + nodeName + " has a projective transform (bottom row is not 0 0 0 1)");
+    throw InputError(path + ": " + what + " has a projective transform (bottom row is not 0 0 0 1)");
   }
   Affine affine = Affine::Identity();
   affine.matrix().topRows<3>() = matrix.topRows<3>();
   return affine;
+}
+
+Affine toAffine(const aiMatrix4x4& m, const std::string& path, const aiNode& node) {
+  return toAffine(m, path, "node " + quoted(node.mName));
+}
+
+/// Each node's frame in the root's (its transform composed with its ancestors'), by name: where
+/// names repeat, the first in depth-first order, as assimp's own FindNode answers. Made once per
+/// file that has bones, so that a hostile file's many bones cost one walk, not one each.
+using NodePlacements = std::unordered_map<std::string, Affine>;
+
+NodePlacements placeNodes(const aiScene& scene, const std::string& path) {
+  NodePlacements placements;
+  std::vector<std::pair<const aiNode*, Affine>> pending;
+  pending.emplace_back(scene.mRootNode, toAffine(scene.mRootNode->mTransformation, path, *scene.mRootNode));
+  while (!pending.empty()) {
+    const auto [node, toRoot] = pending.back();
+    pending.pop_back();
+    placements.emplace(node->mName.C_Str(), toRoot);
+    for (unsigned c = node->mNumChildren; c-- > 0;) {  // reversed: the first child is taken first
+      const aiNode* child = node->mChildren[c];
+      if (child != nullptr) pending.emplace_back(child, toRoot * toAffine(child->mTransformation, path, *child));
+    }
+  }
+  return placements;
+}
+
+/// A skinned mesh's vertices where the file shows them at rest: each vertex at the weighted mean
+/// of its bones' placements, bone b mapping mesh coordinates to the root by its node's transform
+/// (with the node's ancestors) after its offset matrix, which assimp forms from the file's inverse
+/// bind matrix and, for COLLADA, the bind shape matrix. The mesh's own node transform plays no
+/// part, as in assimp's viewer and in COLLADA's skinning rule. A vertex no bone weighs stays at
+/// its node's placement \p toRoot. Read unskinned, an outside review's skinned cube (assimp's
+/// box_nested_animation.dae) stood 1.41 from a probe at its rest centre instead of 1.00.
+std::vector<Vec3> skinnedVertices(const NodePlacements& nodes, const aiMesh& mesh, const Affine& toRoot,
+                                  const std::string& path) {
+  const std::string meshName = "mesh " + quoted(mesh.mName);
+  std::vector<Vec3> sum(mesh.mNumVertices, Vec3::Zero());
+  std::vector<double> weight(mesh.mNumVertices, 0.0);
+  for (unsigned b = 0; b < mesh.mNumBones; ++b) {
+    const aiBone& bone = *mesh.mBones[b];
+    const std::string boneName = meshName + " bone " + quoted(bone.mName);
+    const auto node = nodes.find(bone.mName.C_Str());
+    if (node == nodes.end()) throw InputError(path + ": " + boneName + " names no node of the scene");
+    const Affine placement = node->second * toAffine(bone.mOffsetMatrix, path, boneName + "'s offset matrix");
+    for (unsigned w = 0; w < bone.mNumWeights; ++w) {
+      const aiVertexWeight& vw = bone.mWeights[w];
+      if (vw.mVertexId >= mesh.mNumVertices) {
+        throw InputError(path + ": " + boneName + " weighs vertex " + std::to_string(vw.mVertexId) +
+                         " but the mesh has " + std::to_string(mesh.mNumVertices) + " vertices");
+      }
+      if (!std::isfinite(vw.mWeight) || vw.mWeight < 0.0f) {
+        throw InputError(path + ": " + boneName + " gives vertex " + std::to_string(vw.mVertexId) +
+                         " the weight " + std::to_string(vw.mWeight) + " (weights are finite and >= 0)");
+      }
+      if (vw.mWeight == 0.0f) continue;
+      const aiVector3D& p = mesh.mVertices[vw.mVertexId];
+      sum[vw.mVertexId] += vw.mWeight * (placement * Vec3(p.x, p.y, p.z));
+      weight[vw.mVertexId] += vw.mWeight;
+    }
+  }
+  std::vector<Vec3> placed(mesh.mNumVertices);
+  for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+    const aiVector3D& p = mesh.mVertices[v];
+    // Weights that do not sum to 1 are normalized, as most exporters and viewers do.
+    placed[v] = weight[v] > 0.0 ? Vec3(sum[v] / weight[v]) : Vec3(toRoot * Vec3(p.x, p.y, p.z));
+  }
+  return placed;
 }
 
 std::string formatPoint(const aiVector3D& p) {
@@ -73,7 +142,8 @@ using Gathered = detail::ReadTriangles;
 /// Appends the triangles of \p mesh, placed by \p toRoot, to \p out. requireConsistentScene checked
 /// the indices before post-processing; they are checked again here, after it, because reading out
 /// of range would be a crash, not an error message.
-void gatherMesh(const aiMesh& mesh, const Affine& toRoot, const std::string& path, Gathered& out) {
+void gatherMesh(const NodePlacements& nodes, const aiMesh& mesh, const Affine& toRoot, const std::string& path,
+                Gathered& out) {
   const std::string meshName = "mesh " + quoted(mesh.mName);
   std::uint64_t triangleFaces = 0;
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
@@ -88,12 +158,15 @@ void gatherMesh(const aiMesh& mesh, const Affine& toRoot, const std::string& pat
   if (base + mesh.mNumVertices > std::numeric_limits<std::uint32_t>::max()) {
     throw InputError(path + ": more than 2^32 - 1 vertices");
   }
+  const std::vector<Vec3> skinned =
+      mesh.mNumBones > 0 ? skinnedVertices(nodes, mesh, toRoot, path) : std::vector<Vec3>();
   for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
     const aiVector3D& p = mesh.mVertices[v];
-    const Vec3 world = toRoot * Vec3(p.x, p.y, p.z);
+    const Vec3 world = skinned.empty() ? Vec3(toRoot * Vec3(p.x, p.y, p.z)) : skinned[v];
     if (!world.allFinite()) {
-      throw InputError(path + ": " + meshName + " has a vertex with a non-finite coordinate " +
-                       formatPoint(p) + (Vec3(p.x, p.y, p.z).allFinite() ? " after its node transform" : ""));
+      const char* after = skinned.empty() ? " after its node transform" : " after skinning";
+      throw InputError(path + ": " + meshName + " has a vertex with a non-finite coordinate " + formatPoint(p) +
+                       (Vec3(p.x, p.y, p.z).allFinite() ? after : ""));
     }
     out.vertices.push_back(world);
   }
@@ -118,6 +191,9 @@ void gatherMesh(const aiMesh& mesh, const Affine& toRoot, const std::string& pat
 /// A mesh referenced by several nodes is placed once per reference, as the scene shows it.
 Gathered gatherScene(const aiScene& scene, const std::string& path) {
   Gathered out;
+  const bool skinned = std::any_of(scene.mMeshes, scene.mMeshes + scene.mNumMeshes,
+                                   [](const aiMesh* m) { return m != nullptr && m->mNumBones > 0; });
+  const NodePlacements nodes = skinned ? placeNodes(scene, path) : NodePlacements();
   std::vector<std::pair<const aiNode*, Affine>> pending;
   pending.emplace_back(scene.mRootNode, toAffine(scene.mRootNode->mTransformation, path, *scene.mRootNode));
   while (!pending.empty()) {
@@ -129,7 +205,7 @@ Gathered gatherScene(const aiScene& scene, const std::string& path) {
         throw InputError(path + ": node " + quoted(node->mName) + " refers to mesh " +
                          std::to_string(m) + " which does not exist");
       }
-      gatherMesh(*scene.mMeshes[m], toRoot, path, out);
+      gatherMesh(nodes, *scene.mMeshes[m], toRoot, path, out);
     }
     for (unsigned c = 0; c < node->mNumChildren; ++c) {
       const aiNode* child = node->mChildren[c];
@@ -325,9 +401,13 @@ Mesh loadMeshUnguarded(const std::string& path, const ReaderLimits& limits, Coll
   {
     const std::string bytes = detail::readWholeFile(path);
     fileBytes = bytes.size();
+    const detail::MeshReader reader = detail::chooseReader(path, bytes);
+    // Assimp 5.2 reads no UTF-16 file either (its own test models: "malformed XML", "magic
+    // sequence not found", or no triangles).
+    detail::requireNarrowText(path, bytes, reader);
     // OBJ, OFF, PLY and STL are read into double without loss (see each reader for why it, and
     // docs/numerics.md for the measurement); everything else goes through assimp, in float.
-    switch (detail::chooseReader(path, bytes)) {
+    switch (reader) {
       case detail::MeshReader::obj: return detail::meshFromSoup(detail::readObj(path, bytes), path);
       case detail::MeshReader::off: return detail::meshFromSoup(detail::readOff(path, bytes), path);
       case detail::MeshReader::ply: return detail::meshFromSoup(detail::readPly(path, bytes), path);

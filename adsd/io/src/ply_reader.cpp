@@ -2,7 +2,9 @@
 //
 // The header is parsed, the data walked instance by instance (ASCII: one instance per line, as PLY
 // writers emit it; binary: record by record, list lengths included), and each vertex's x, y, z
-// and each face's corner list (vertex_indices or vertex_index, any integer type) kept. ASCII
+// and each face's corner list (vertex_indices or vertex_index, any integer type) kept, and each
+// triangle strip of a tristrips element (vertex_indices, -1 starting a new strip), which older
+// scanners wrote instead of faces. ASCII
 // numbers go through std::from_chars, correctly rounded whatever type the header declares, so 17
 // significant digits come back bit for bit; binary float32 and float64 values are converted to
 // double exactly. Face indices are checked against the vertex count, coordinates must be finite
@@ -98,6 +100,12 @@ bool isVertexIndexList(const Element& element, const Property& property) {
          (property.name == "vertex_indices" || property.name == "vertex_index");
 }
 
+/// A tristrips element's index list: strips of triangles, each new index making a triangle with
+/// the two before it, an index of -1 ending one strip and starting the next.
+bool isStripList(const Element& element, const Property& property) {
+  return element.name == "tristrips" && property.isList && property.name == "vertex_indices";
+}
+
 class PlyChecker {
  public:
   PlyChecker(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes), lines_(bytes) {}
@@ -191,6 +199,11 @@ class PlyChecker {
     // Faces without a corner list were skipped, and the file read as one with no triangles.
     for (const Element& e : elements_) {
       const auto corners = [&e](const Property& p) { return isVertexIndexList(e, p); };
+      const auto strips = [&e](const Property& p) { return isStripList(e, p) && p.valueType.isInteger; };
+      if (e.name == "tristrips" && e.count > 0 && std::none_of(e.properties.begin(), e.properties.end(), strips)) {
+        throw InputError(path_ + ": the PLY header's element tristrips has no 'property list <count type> <integer "
+                         "type> vertex_indices': its strips have no corners");
+      }
       if (e.name == "face" && e.count > 0 && std::none_of(e.properties.begin(), e.properties.end(), corners)) {
         throw InputError(path_ + ": the PLY header's element face (" + std::to_string(e.count) +
                          " faces) has no 'property list <count type> <index type> vertex_indices' (or " +
@@ -222,6 +235,29 @@ class PlyChecker {
     if (index < 0 || index >= vertexCount_) {
       throw InputError(where(e, instance) + " refers to vertex " + std::to_string(index) + " but the file has " +
                        std::to_string(vertexCount_) + " vertices (indices start at 0)");
+    }
+  }
+
+  /// Appends the triangles of strip list \p indices (instance \p instance of \p e): index k >= 2
+  /// of a strip makes a triangle with the two before it, every other one turned so that all face
+  /// the same way; -1 starts a new strip. A triangle repeating an index is the strips' way of
+  /// joining two strips, not a surface, and is left out.
+  void addStrips(const std::vector<long long>& indices, const Element& e, long long instance) {
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+      if (indices[k] == -1) {
+        start = k + 1;
+        continue;
+      }
+      checkIndex(indices[k], e, instance);
+      if (k < start + 2) continue;
+      const long long a = indices[k - 2], b = indices[k - 1], c = indices[k];
+      if (a == b || b == c || a == c) continue;
+      const bool turned = (k - start) % 2 == 1;
+      soup_.addCorner(static_cast<std::uint32_t>(turned ? b : a));
+      soup_.addCorner(static_cast<std::uint32_t>(turned ? a : b));
+      soup_.addCorner(static_cast<std::uint32_t>(c));
+      soup_.closePolygon();
     }
   }
 
@@ -331,14 +367,18 @@ class PlyChecker {
           if (n < 0) throw InputError(where(e, i) + ": list " + p.name + " has negative length " + std::to_string(n));
           requireCorners(n, e, p, i);
           const bool corners = isVertexIndexList(e, p) && p.valueType.isInteger;
+          const bool strip = isStripList(e, p) && p.valueType.isInteger;
+          stripIndices_.clear();
           for (long long j = 0; j < n; ++j) {
             const long long item = value(p.valueType, p, "list", number);
             if (corners) {
               checkIndex(item, e, i);
               soup_.addCorner(static_cast<std::uint32_t>(item));
             }
+            if (strip) stripIndices_.push_back(item);
           }
           if (corners) soup_.closePolygon();
+          if (strip) addStrips(stripIndices_, e, i);
         }
         if (k != t.size()) {
           throw InputError(where(e, i) + ": " + std::to_string(t.size() - k) +
@@ -461,6 +501,10 @@ class PlyChecker {
               soup_.addCorner(static_cast<std::uint32_t>(index));
             }
             soup_.closePolygon();
+          } else if (isStripList(e, p) && p.valueType.isInteger) {
+            stripIndices_.clear();
+            for (long long j = 0; j < n; ++j, pos_ += itemBytes) stripIndices_.push_back(readInteger(p.valueType));
+            addStrips(stripIndices_, e, i);
           } else {
             pos_ += static_cast<std::size_t>(n) * itemBytes;
           }
@@ -471,6 +515,7 @@ class PlyChecker {
   }
 
   const std::string& path_;
+  std::vector<long long> stripIndices_;  // one tristrips list, read before its triangles are made
   std::string_view bytes_;
   LineScanner lines_;
   Format format_ = Format::ascii;
