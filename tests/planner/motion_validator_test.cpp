@@ -246,9 +246,9 @@ TEST(LeastClearanceAlong, FindsTheWallADiscretePathStepsOverAndTheLeastOverTheTo
 // A motion that leaves a wall its start is flush against (1e-9 of the scene away) is certified:
 // its first steps are below kMinimumStepFraction, and each one's spare clearance grows by a
 // factor, so they are taken until the steps are long again. Every such step was a rejection
-// before, and certified planning from a flush start never solved (an outside review). A motion
-// that slides along the wall at that distance is still rejected, and the oracle finds no
-// collision on what is accepted.
+// before, and certified planning from a flush start never solved (an outside review). The motion
+// arriving there is certified too. A motion that slides along the wall at that distance is still
+// rejected, and the oracle finds no collision on what is accepted.
 TEST(CertifiedMotion, AMotionLeavingAWallItStartsFlushAgainstIsCertified) {
   SceneFixture f = test::thinWallFixture();
   auto checker = std::make_shared<MeshValidityChecker>(f.si, f.scene);
@@ -263,6 +263,9 @@ TEST(CertifiedMotion, AMotionLeavingAWallItStartsFlushAgainstIsCertified) {
   away->setYaw(0.0);
   CertifiedMotionValidator certified(f.si, checker);
   EXPECT_TRUE(certified.checkMotion(flush.get(), away.get())) << "leaving the wall at 45 degrees";
+  // The same motion arriving: its steps shrink with the clearance and graze before the end, which
+  // a walk from the flush end reaches (path.check() of a path a goal tree grew asks this).
+  EXPECT_TRUE(certified.checkMotion(away.get(), flush.get())) << "arriving at the wall at 45 degrees";
   for (int i = 0; i <= 400; ++i) {
     f.si->getStateSpace()->interpolate(flush.get(), away.get(), i / 400.0, s.get());
     EXPECT_FALSE(oracleCollides(f, s.get())) << "at " << i / 400.0;

@@ -38,7 +38,8 @@ int main() {
   scene->environment = ap::splitForRobot(adsd::io::loadMesh(cfg.worldPath), scene->robot);
   auto space = std::make_shared<ob::SE2StateSpace>();  // as cfg.space says: SE(3) takes SE3StateSpace, 3 bounds
   ob::RealVectorBounds bounds(2);
-  for (int i = 0; i < 2; ++i) bounds.setLow(i, cfg.volume->min()[i]), bounds.setHigh(i, cfg.volume->max()[i]);
+  const Eigen::AlignedBox3d volume = cfg.volume.value();  // the cfg's volume.* keys (optional in a cfg)
+  for (int i = 0; i < 2; ++i) bounds.setLow(i, volume.min()[i]), bounds.setHigh(i, volume.max()[i]);
   space->setBounds(bounds);
   og::SimpleSetup ss(space);
   auto checker = std::make_shared<ap::MeshValidityChecker>(ss.getSpaceInformation(), scene);
@@ -57,19 +58,13 @@ int main() {
     return 1;
   }
   og::PathGeometric path = ss.getSolutionPath();
-  // Every motion proven collision-free. A certified proof covers the whole segment whichever end it
-  // starts from, and a planner that grows a tree from the goal (the default here) proves its motions
-  // from their far end; from the end that nearly touches an obstacle the proof can stall (the
-  // validator's kMinimumStepFraction) and reject, so PathGeometric::check(), which only tries the
-  // forward direction, is not the question.
-  const ob::SpaceInformationPtr& si = ss.getSpaceInformation();
-  for (std::size_t i = 0; i < path.getStateCount(); ++i) {
-    const bool motionProven = i == 0 || si->checkMotion(path.getState(i - 1), path.getState(i)) ||
-                              si->checkMotion(path.getState(i), path.getState(i - 1));
-    if (!si->isValid(path.getState(i)) || !motionProven) {
-      std::printf("state %zu of the solution, or the motion to it, is not proven valid\n", i);
-      return 1;
-    }
+  // Every state valid and every motion proven collision-free, forward as OMPL checks a path. A
+  // planner that grows a tree from the goal (the default here) proved its motions from their far
+  // end; the validator accepts a motion in either direction alike (14 of 20 such paths failed
+  // check() when a walk toward a state flush against a wall stalled: an outside review).
+  if (!path.check()) {
+    std::printf("PathGeometric::check() fails on the solution\n");
+    return 1;
   }
   path.interpolate(40);  // more states along the same motions, each checked below
   const adsd::Mesh world = adsd::io::loadMesh(cfg.worldPath);

@@ -18,8 +18,9 @@ namespace adsd::planner {
 /// Motions whose certified step would advance less than this fraction of the motion are rejected
 /// (dimensionless). Stepping by clearance converges geometrically towards an obstacle that the
 /// motion touches (a Zeno sequence); this floor ends it, and bounds the queries spent on one motion
-/// to about 1 / kMinimumStepFraction. A valid motion that keeps this close for its whole length is
-/// rejected: conservative, never unsafe.
+/// to about 1 / kMinimumStepFraction per end: a walk that stops at the floor is finished from the
+/// motion's other end. A valid motion that keeps this close for its whole length is rejected:
+/// conservative, never unsafe.
 inline constexpr double kMinimumStepFraction = 1e-5;
 
 /// Except for a motion leaving an obstacle its start is flush against: the floor's steps are taken
