@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "adsd/planner/certified_motion_validator.h"
+#include "non_null.h"
 
 namespace adsd::planner {
 
@@ -140,7 +141,8 @@ void ArmMotionClearance::resetCounts() {
 
 ArmClearanceObjective::ArmClearanceObjective(const ob::SpaceInformationPtr& si,
                                              std::shared_ptr<const ArmMotionClearance> clearance)
-    : ob::OptimizationObjective(si), clearance_(std::move(clearance)) {
+    : ob::OptimizationObjective(si),
+      clearance_(detail::nonNull(std::move(clearance), "clearance objective: the clearance")) {
   description_ = "Certified minimum clearance";
   // Never satisfied: there is no clearance good enough to stop at.
   setCostThreshold(ob::Cost(kInfinity));

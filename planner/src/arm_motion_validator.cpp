@@ -5,6 +5,7 @@
 
 #include "adsd/error.h"
 #include "adsd/planner/certified_motion_validator.h"
+#include "non_null.h"
 
 namespace adsd::planner {
 
@@ -12,7 +13,9 @@ namespace ob = ompl::base;
 
 ArmMotionValidator::ArmMotionValidator(const ob::SpaceInformationPtr& si,
                                        std::shared_ptr<const ArmValidityCheckerBase> checker)
-    : ob::MotionValidator(si), checker_(std::move(checker)), bound_(checker_->model()) {
+    : ob::MotionValidator(si),
+      checker_(detail::nonNull(std::move(checker), "arm motion validator: the checker")),
+      bound_(checker_->model()) {
   const ArmModel& model = checker_->model();
   if (!checker_->scene().environment.empty()) {
     for (std::size_t l = 0; l < model.links.size(); ++l) {

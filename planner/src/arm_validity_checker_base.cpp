@@ -468,16 +468,24 @@ bool ArmValidityCheckerBase::isValid(const ompl::base::State* state) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::validity);
   if (!si_->satisfiesBounds(state)) return false;
   const std::vector<Pose>* poses = posesFor(state);
+  return poses != nullptr && validAt(*poses);
+}
+
+bool ArmValidityCheckerBase::validAt(const std::vector<Pose>& linkPoses) const {
   // The solids last: most states in collision fail a pair first, and the test is for free ones.
-  return poses != nullptr && separatedAbove(*poses, safetyMargin_) && !anyLinkInsideSolid(*poses) &&
-         !heldByALinkSolid(*poses, [](std::size_t, std::size_t) { return true; });
+  return separatedAbove(linkPoses, safetyMargin_) && !anyLinkInsideSolid(linkPoses) &&
+         !heldByALinkSolid(linkPoses, [](std::size_t, std::size_t) { return true; });
 }
 
 bool ArmValidityCheckerBase::isValid(const ompl::base::State* state, double& dist) const {
   ScopedQueryTimer timer(counters_, ScopedQueryTimer::Kind::clearance);
   const std::vector<Pose>* poses = posesFor(state);
   dist = poses != nullptr ? distanceUpTo(*poses, std::numeric_limits<double>::infinity()) : 0.0;
-  return si_->satisfiesBounds(state) && dist > safetyMargin_;
+  if (!si_->satisfiesBounds(state) || poses == nullptr) return false;
+  if (dist > safetyMargin_) return true;
+  // A lower bound (a tolerance's, a cap's) at or below the margin does not decide, as the rigid
+  // checker's isValid(state, dist) says (rigid_body_validity_checker.cpp): isValid(state) does.
+  return specs_.clearanceComputationType != ompl::base::StateValidityCheckerSpecs::EXACT && validAt(*poses);
 }
 
 double ArmValidityCheckerBase::clearance(const ompl::base::State* state) const {

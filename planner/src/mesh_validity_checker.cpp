@@ -5,6 +5,7 @@
 
 #include "adsd/error.h"
 #include "clearance_queries.h"
+#include "non_null.h"
 
 namespace adsd::planner {
 
@@ -28,7 +29,9 @@ std::shared_ptr<const RigidBodyScene> withHierarchies(const std::shared_ptr<cons
 MeshValidityChecker::MeshValidityChecker(const ompl::base::SpaceInformationPtr& si,
                                          std::shared_ptr<const RigidBodyScene> scene, double safetyMargin,
                                          const DistanceOptions& clearanceOptions)
-    : RigidBodyValidityChecker(si, withHierarchies(scene), safetyMargin), clearanceOptions_(clearanceOptions) {
+    : RigidBodyValidityChecker(si, withHierarchies(detail::nonNull(std::move(scene), "validity checker: the scene")),
+                               safetyMargin),
+      clearanceOptions_(clearanceOptions) {
   requireClearanceOptions(clearanceOptions_);
   // Honest about what clearance() returns: exact, or a lower bound (tolerance: the interval's lower
   // end; cap: min(distance, cap)).

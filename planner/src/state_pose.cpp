@@ -1,6 +1,7 @@
 #include "adsd/planner/state_pose.h"
 
 #include <cmath>
+#include <limits>
 
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
@@ -28,8 +29,16 @@ Pose poseFromState(const ob::State* state, RigidBodySpace space) {
     const auto* s = state->as<ob::SE3StateSpace::StateType>();
     pose.translate(Vec3(s->getX(), s->getY(), s->getZ()));
     // OMPL keeps its quaternions normalized; normalizing again guards against drift in states a
-    // user wrote by hand, so the pose stays a rigid motion.
-    pose.rotate(quaternionOf(*s).normalized().toRotationMatrix());
+    // user wrote by hand, so the pose stays a rigid motion. A quaternion of no length names no
+    // rotation (Eigen would leave it be and answer the identity): the pose is then not finite,
+    // which checkers take as invalid, at clearance 0, as they take a NaN.
+    const Eigen::Quaterniond q = quaternionOf(*s);
+    const double norm = q.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) {
+      pose.matrix().setConstant(std::numeric_limits<double>::quiet_NaN());
+      return pose;
+    }
+    pose.rotate(Eigen::Quaterniond(q.coeffs() / norm).toRotationMatrix());
   }
   return pose;
 }

@@ -261,6 +261,34 @@ int statesToCheck(int regular, int sanitized) {
 #endif
 }
 
+// With a clearance that is a lower bound below the margin (here a cap of half of it), isValid(state,
+// dist) called every state invalid, the bound never passing the margin: the threshold query
+// decides there, so both calls give the brute force's answer (an outside review found the rigid
+// checker's twin of this).
+TEST(ArmValidityChecker, ValidityWithABoundedClearanceIsTheThresholdQuerysToo) {
+  ADSD_REQUIRE_ROBOTS();
+  const ArmScene scene = test::kr5BoxScene();
+  auto si = spaceFor(*scene.model);
+  const double margin = 0.002;
+  auto capped = std::make_shared<ArmValidityChecker>(si, scene, margin, DistanceOptions::cappedAt(0.5 * margin));
+  const auto* space = si->getStateSpace()->as<ArmStateSpace>();
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  std::vector<double> q(space->dof());
+  std::mt19937_64 rng(5);
+  int valid = 0;
+  for (int i = 0; i < statesToCheck(80, 20); ++i) {
+    test::uniformJoints(*scene.model, rng, q.data());
+    space->fromJoints(q.data(), s.get());
+    const bool expected = test::bruteForceClearance(scene, q.data()) > margin;
+    double dist = -1.0;
+    EXPECT_EQ(capped->isValid(s.get()), expected) << "state " << i;
+    EXPECT_EQ(capped->isValid(s.get(), dist), expected) << "state " << i << ", clearance bound " << dist;
+    EXPECT_LE(dist, 0.5 * margin);
+    valid += expected;
+  }
+  EXPECT_GT(valid, 0);
+}
+
 TEST(ArmValidityChecker, Kr5ClearanceEqualsTheBruteForceAndFcl) {
   ADSD_REQUIRE_ROBOTS();
   const ArmScene scene = test::kr5BoxScene();

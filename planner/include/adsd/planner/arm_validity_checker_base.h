@@ -144,6 +144,8 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   bool forObstaclePartsNear(const Vec3& centre, const Vec3& half, double reach2, Visit visit) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
+  /// isValid's answer for the links at \p linkPoses (a state within bounds).
+  bool validAt(const std::vector<Pose>& linkPoses) const;
   /// The smallest distance over the checked pairs (the link pairs left out when \p obstaclesOnly).
   double distanceUpTo(const std::vector<Pose>& linkPoses, double cap, bool obstaclesOnly = false) const;
 

@@ -38,18 +38,20 @@ class RigidBodyValidityChecker : public ompl::base::StateValidityChecker {
 
   /// \brief Bounds check, then the threshold query: is the distance above the safety margin.
   bool isValid(const ompl::base::State* state) const final;
-  /// \brief One distance query gives both answers: \p dist is clearance(state) and the state is
-  /// valid when it is within bounds and dist > safetyMargin().
+  /// \brief \p dist is clearance(state), and the state is valid when it is within bounds and dist >
+  /// safetyMargin(); when the clearance is a lower bound (not EXACT) at or below the margin, the
+  /// threshold query decides, so the answer is always isValid(state)'s.
   bool isValid(const ompl::base::State* state, double& dist) const final;
   /// \brief The distance between robot and environment (exact, or a lower bound when the
-  /// subclass says so in specs_.clearanceComputationType). A state whose pose is not finite (a
-  /// NaN coordinate) is invalid, at clearance 0.
+  /// subclass says so in specs_.clearanceComputationType). A state whose pose the distance query
+  /// cannot take (a NaN coordinate, a zero quaternion, a translation beyond
+  /// tolerance::kMaxCoordinate) is invalid, at clearance 0.
   double clearance(const ompl::base::State* state) const final;
 
   /// \brief A lower bound on the distance at \p state that equals clearance(state) when that is
   /// below \p cap and is at least min(clearance, cap) otherwise (up to the checker's own
   /// tolerance). The certified motion validator asks only for as much as it needs. Counted as a
-  /// clearance query.
+  /// clearance query. Throws adsd::InputError for a cap that is negative or NaN.
   double clearanceUpTo(const ompl::base::State* state, double cap) const;
 
   double safetyMargin() const { return safetyMargin_; }

@@ -13,7 +13,8 @@
 namespace adsd::planner {
 
 /// \brief The robot's pose for \p state: SE(3) is translation then the state's quaternion;
-/// SE(2) is translation (x, y, 0) then a rotation by yaw about z.
+/// SE(2) is translation (x, y, 0) then a rotation by yaw about z. A quaternion of zero or
+/// non-finite length gives a pose whose entries are NaN.
 Pose poseFromState(const ompl::base::State* state, RigidBodySpace space);
 
 /// \brief Writes \p pose into \p state. For SE(2) only x, y and the yaw about z are kept.
