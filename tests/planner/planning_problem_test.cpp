@@ -96,6 +96,24 @@ TEST(PlanningProblem, StartInCollisionOrOutsideTheBounds) {
             outside + ":4: key 'problem.start.x': the start state is outside the bounds (x = -5, the bounds [-4, 4])");
 }
 
+// A start valid by a hair, nearer the wall than distances are trusted (1e-10 of the scene): with
+// certified motions no path can leave it, and planning from it used to run out of time without a
+// word (an outside review). It is warned of, naming its line; with discrete motions it is not.
+TEST(PlanningProblem, StartFlushAgainstAWallIsWarnedOfForCertifiedMotions) {
+  ScratchDir dir;
+  // The bar's face touches the wall's at x = -0.02 (CheckerSettings.SafetyMarginMakesNearStatesInvalid).
+  const std::string flush = writeThinWall(dir, "", "start.x = -0.02000000001\nstart.y = -1\nstart.theta = 0\n");
+  CheckingOptions certified;
+  certified.motion = MotionKind::certified;
+  PlanningProblem problem(readProblemFile(flush), certified);
+  ASSERT_GT(problem.checker()->clearance(problem.setup().getProblemDefinition()->getStartState(0)), 0.0);
+  ASSERT_EQ(problem.warnings().size(), 1u);
+  EXPECT_EQ(problem.warnings()[0].rfind(flush + ":4: key 'problem.start.x': the start state is ", 0), 0u)
+      << problem.warnings()[0];
+  EXPECT_NE(problem.warnings()[0].find("no certified motion can be proven to or from it"), std::string::npos);
+  EXPECT_TRUE(PlanningProblem(readProblemFile(flush), CheckingOptions{}).warnings().empty());
+}
+
 TEST(PlanningProblem, SpaceParametersAreAppliedOrReported) {
   ScratchDir dir;
   PlanningProblem problem(readProblemFile(writeThinWall(dir, "longest_valid_segment_fraction = 0.002\nfoo = 1\n")),
