@@ -69,77 +69,59 @@ bool CertifiedMotionValidator::certify(const ob::State* s1, const ob::State* s2,
     clearanceSteps_.fetch_add(1, std::memory_order_relaxed);
     return clearance - margin - trust;
   };
-  double t = 0.0;
-  bool proven = false;
-  // Where the walk from s1 stopped below the step floor, with every state before it proven (-1:
-  // it did not stop so).
-  double grazedAt = -1.0;
-  // The spare clearance of the last step, and how many steps in a row were below the floor.
-  double lastSpare = 0.0;
-  int smallSteps = 0;
-  while (true) {
-    const double spare = spareAt(t, 1.0 - t);
-    if (!(spare > 0.0)) break;  // this state is not proven valid
-    lastValidT = t;
-    if (t >= 1.0 || sweep <= 0.0) {  // at s2, or s1 == s2 as poses: the one query decided it
-      proven = true;
-      break;
-    }
-    // Every state in [t, t + step] is farther than the margin: its distance is at least
-    // clearance - sweep * step = margin + trust.
-    const double step = spare / sweep;
-    if (t + step >= 1.0) {
-      proven = true;
-      break;
-    }
-    // Grazing: not provable at this cost (see the constant). Except a motion leaving an obstacle
-    // it starts flush against, whose spare grows by a factor with every step (by 1 + v / sweep,
-    // v its speed away from the obstacle): a start 1.5e-8 from a wall, 1e-9 of the scene, had
-    // every motion rejected, and certified planning from it never solved (an outside review).
-    // Such steps are taken while the spare grows by kEscapeGrowth each, up to kEscapeSteps in a
-    // row; a motion that slides along or closes in stops at once, as before.
-    if (step < kMinimumStepFraction) {
-      const bool escaping = t > 0.0 && spare >= kEscapeGrowth * lastSpare && smallSteps < kEscapeSteps;
-      if (t > 0.0 && !escaping) {
-        grazedAt = t + step;
-        break;
-      }
-      ++smallSteps;
-    } else {
-      smallSteps = 0;
-    }
-    lastSpare = spare;
-    t += step;
-  }
-  // A walk that grazed may be closing in on an end flush against an obstacle, which its steps,
-  // shrinking with the clearance, never reach; from that end the same motion leaves the obstacle
-  // and its steps grow. So the rest is walked from s2 back to where the first walk stopped, with
-  // the same rules, and the motion is proven when the two meet: it is then accepted in either
-  // direction, as OMPL's PathGeometric::check asks of paths whose motions a planner growing a
-  // tree from the goal checked from their far ends (an outside review: 14 of 20 paths of the
-  // README's example failed check(), every rejected motion accepted in reverse).
-  if (grazedAt >= 0.0) {
-    double u = 1.0;
-    lastSpare = 0.0;
-    smallSteps = 0;
+  // Walks the motion's parameter from `from` towards `to` (either way), each step as long as the
+  // clearance at its start proves: every state in [x, x + step] is farther than the margin, its
+  // distance at least clearance - sweep * step = margin + trust. `lastProven` gets each parameter
+  // whose state was proven. Ends proven at `to`, unproven at a state not proven valid, or grazing
+  // (`grazedAt`, where the states up to it are proven) when a step falls below the floor.
+  struct WalkEnd {
+    bool proven = false;
+    double grazedAt = -1.0;
+  };
+  auto walk = [&](double from, double to, double& lastProven) {
+    const double direction = to > from ? 1.0 : -1.0;
+    double x = from;
+    // The spare clearance of the last step, and how many steps in a row were below the floor.
+    double lastSpare = 0.0;
+    int smallSteps = 0;
     while (true) {
-      const double spare = spareAt(u, u - grazedAt);
-      if (!(spare > 0.0)) break;
+      const double spare = spareAt(x, direction * (to - x));
+      if (!(spare > 0.0)) return WalkEnd{};  // this state is not proven valid
+      lastProven = x;
+      // At `to`, or s1 == s2 as poses: the one query decided it.
+      if (direction * (to - x) <= 0.0 || sweep <= 0.0) return WalkEnd{true};
       const double step = spare / sweep;
-      if (u - step <= grazedAt) {
-        proven = true;
-        break;
-      }
+      const double next = x + direction * step;
+      if (direction * (next - to) >= 0.0) return WalkEnd{true};
+      // Grazing: not provable at this cost (see the constant). Except a motion leaving an obstacle
+      // its end is flush against, whose spare grows by a factor with every step (by 1 + v / sweep,
+      // v its speed away from the obstacle): a start 1.5e-8 from a wall, 1e-9 of the scene, had
+      // every motion rejected, and certified planning from it never solved (an outside review).
+      // Such steps are taken while the spare grows by kEscapeGrowth each, up to kEscapeSteps in a
+      // row; a motion that slides along or closes in stops at once.
       if (step < kMinimumStepFraction) {
-        const bool escaping = u < 1.0 && spare >= kEscapeGrowth * lastSpare && smallSteps < kEscapeSteps;
-        if (u < 1.0 && !escaping) break;
+        const bool escaping = x != from && spare >= kEscapeGrowth * lastSpare && smallSteps < kEscapeSteps;
+        if (x != from && !escaping) return WalkEnd{false, next};
         ++smallSteps;
       } else {
         smallSteps = 0;
       }
       lastSpare = spare;
-      u -= step;
+      x = next;
     }
+  };
+  const WalkEnd fromS1 = walk(0.0, 1.0, lastValidT);
+  bool proven = fromS1.proven;
+  // A walk that grazed may be closing in on an end flush against an obstacle, which its steps,
+  // shrinking with the clearance, never reach; from that end the same motion leaves the obstacle
+  // and its steps grow. So the rest is walked from s2 back to where the first walk stopped, and
+  // the motion is proven when the two meet: a motion reaching a flush state is accepted as the one
+  // leaving it, as OMPL's PathGeometric::check asks of paths whose motions a planner growing a
+  // tree from the goal checked from their far ends (an outside review: 14 of 20 paths of the
+  // README's example failed check(), every rejected motion accepted in reverse).
+  if (!proven && fromS1.grazedAt >= 0.0) {
+    double provenFromS2 = 1.0;
+    proven = walk(1.0, fromS1.grazedAt, provenFromS2).proven;
   }
   si_->freeState(state);
   return proven;
