@@ -41,7 +41,8 @@ adsd=${ADSD:-$here/../../build/planner/app/adsd}
 jobs=${JOBS:-$(nproc)}
 [[ -x "$adsd" ]] || { echo "shard_parallel.sh: no adsd program at '$adsd' (set ADSD)" >&2; exit 2; }
 command -v parallel >/dev/null || { echo "shard_parallel.sh: GNU parallel is missing (Debian package parallel)" >&2; exit 1; }
-command -v ompl_benchmark_statistics >/dev/null ||
+# OMPL's log-to-database script, by Debian's name or by the one OMPL's own install gives it.
+statistics=$(command -v ompl_benchmark_statistics || command -v ompl_benchmark_statistics.py) ||
   { echo "shard_parallel.sh: ompl_benchmark_statistics is missing (Debian package ompl-demos)" >&2; exit 1; }
 
 ranges=()
@@ -65,5 +66,5 @@ fi
 stem=$(basename "${logs[0]}")
 stem=${stem%.runs-*}
 database="$out/$stem.db"
-ompl_benchmark_statistics "${logs[@]}" -d "$database"
+"$statistics" "${logs[@]}" -d "$database"
 /usr/bin/python3 "$here/plot_benchmark.py" "$database" --out "$out"

@@ -72,7 +72,10 @@ case "$mode" in
     [[ ${#logs[@]} -gt 0 ]] || fail "no shard log in $out/shards"
     stem=$(basename "${logs[0]}")
     stem=${stem%.runs-*}
-    ompl_benchmark_statistics "${logs[@]}" -d "$out/$stem.db"
+    # OMPL's log-to-database script, by Debian's name or by the one OMPL's own install gives it.
+    statistics=$(command -v ompl_benchmark_statistics || command -v ompl_benchmark_statistics.py) ||
+      fail "ompl_benchmark_statistics is not on PATH (Debian package ompl-demos)"
+    "$statistics" "${logs[@]}" -d "$out/$stem.db"
     /usr/bin/python3 "$here/plot_benchmark.py" "$out/$stem.db" --out "$out"
     ;;
   *)

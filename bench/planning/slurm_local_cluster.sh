@@ -50,9 +50,11 @@ cannot_start() {
 [[ -x "$adsd" ]] || failed "no adsd program at $adsd"
 [[ -f "$problem" ]] || failed "no $problem (build the target adsd_problems)"
 [[ $(id -u) -eq 0 ]] || cannot_start "not root"
-for tool in munged mungekey munge unmunge slurmctld slurmd sbatch squeue scontrol sinfo ompl_benchmark_statistics; do
+for tool in munged mungekey munge unmunge slurmctld slurmd sbatch squeue scontrol sinfo; do
   command -v "$tool" >/dev/null || cannot_start "$tool is not on PATH"
 done
+command -v ompl_benchmark_statistics >/dev/null || command -v ompl_benchmark_statistics.py >/dev/null ||
+  cannot_start "ompl_benchmark_statistics is not on PATH"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/adsd-slurm.XXXXXX")
 chmod 0755 "$work"  # munged refuses directories that others may write to

@@ -50,6 +50,7 @@ import collections
 import os
 import random
 import re
+import shutil
 import sqlite3
 import statistics
 import subprocess
@@ -108,7 +109,11 @@ def write_database(logs, database, program="solve_time_ratios.py"):
     costs more than a short problem's run); opened read-only. PROGRAM names the caller in errors."""
     if os.path.exists(database):
         os.remove(database)
-    result = subprocess.run(["ompl_benchmark_statistics"] + logs + ["-d", database],
+    # Debian's name for OMPL's script, or the name OMPL's own install gives it.
+    converter = shutil.which("ompl_benchmark_statistics") or shutil.which("ompl_benchmark_statistics.py")
+    if converter is None:
+        sys.exit("%s: ompl_benchmark_statistics is not on PATH (Debian package ompl-demos)" % program)
+    result = subprocess.run([converter] + logs + ["-d", database],
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     if result.returncode != 0:
         sys.stderr.write(result.stderr)

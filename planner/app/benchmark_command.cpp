@@ -115,8 +115,10 @@ constexpr std::uint64_t kShardSeedOffset = 1;
 /// whichever python3 comes first on PATH).
 const char* const kPython = "/usr/bin/python3";
 
-/// OMPL's program that turns benchmark logs into a SQLite database (Debian package ompl-demos).
-const char* const kStatisticsProgram = "ompl_benchmark_statistics";
+/// OMPL's program that turns benchmark logs into a SQLite database, by both names it is installed
+/// under, the first found on PATH taken: Debian's package ompl-demos drops the script's extension,
+/// OMPL's own install (scripts/CMakeLists.txt; what a source build of OMPL 2.0 gives) keeps it.
+const char* const kStatisticsPrograms[] = {"ompl_benchmark_statistics", "ompl_benchmark_statistics.py"};
 
 #ifndef ADSD_PLOT_BENCHMARK_SCRIPT
 #define ADSD_PLOT_BENCHMARK_SCRIPT ""
@@ -973,10 +975,14 @@ int benchmark(const std::vector<std::string>& args) {
   Tools tools;
   tools.plotter = ADSD_PLOT_BENCHMARK_SCRIPT;
   if (!a.logOnly) {
-    const auto found = findOnPath(kStatisticsProgram);
+    std::optional<std::string> found;
+    for (const char* name : kStatisticsPrograms) {
+      if (!found) found = findOnPath(name);
+    }
     if (!found) {
-      throw ToolFailure(std::string(kStatisticsProgram) +
-                        " is not on PATH (Debian package ompl-demos); --log-only writes the log without it");
+      throw ToolFailure(std::string(kStatisticsPrograms[0]) + " (or " + kStatisticsPrograms[1] +
+                        ", as OMPL's own install names it) is not on PATH (Debian package ompl-demos); --log-only "
+                        "writes the log without it");
     }
     tools.statistics = *found;
     if (::access(kPython, X_OK) != 0) throw ToolFailure(std::string(kPython) + " is missing (Debian package python3)");

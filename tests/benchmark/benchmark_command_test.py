@@ -8,7 +8,8 @@ ompl_benchmark_statistics stops with exit status 1 before the runs; a run over b
 both motion validators writes a log, a database that ompl_benchmark_statistics accepted, a summary
 and plots, and the database holds the experiment, the four combinations and our columns with
 values consistent with each other; shards (--run-range, --seed, --log-only) write their own logs
-with their own seeds, and ompl_benchmark_statistics merges them into one database.
+with their own seeds, and ompl_benchmark_statistics merges them into one database; the script
+found by the name OMPL's own install gives it (ompl_benchmark_statistics.py) serves as well.
 """
 import argparse
 import os
@@ -114,6 +115,29 @@ def bad_input(adsd, cfg, problems, work):
     # No ompl_benchmark_statistics on PATH: exit 1 before any run, nothing written.
     env = dict(os.environ, PATH=os.path.join(work, "empty-path"))
     expect_bad_input(adsd, [cfg], "ompl_benchmark_statistics", os.path.join(work, "bad_tool"), status=1, env=env)
+
+
+def statistics_program():
+    """OMPL's log-to-database script on PATH: Debian's name, or the one OMPL's own install gives it."""
+    return shutil.which("ompl_benchmark_statistics") or shutil.which("ompl_benchmark_statistics.py")
+
+
+def upstream_name(adsd, cfg, work, statistics):
+    """OMPL's own install (a source build, as of OMPL 2.0) names the script with its .py: with only
+    that name on PATH the benchmark still writes its database (it stopped, saying the program was
+    not on PATH)."""
+    path = os.path.join(work, "upstream-path")
+    os.makedirs(path)
+    os.symlink(os.path.realpath(statistics), os.path.join(path, "ompl_benchmark_statistics.py"))
+    out = os.path.join(work, "upstream")
+    p = run(adsd, [cfg, "--runs", "1", "--time", "0.2", "--checker", "adsd", "--motion", "discrete", "--out", out],
+            env=dict(os.environ, PATH=path))
+    if not check(p.returncode == 0, "upstream name: exit status %d\nstderr: %s" % (p.returncode, p.stderr)):
+        return
+    database = os.path.join(out, "thin_wall.db")
+    if check(os.path.isfile(database), "upstream name: thin_wall.db not written"):
+        runs = sqlite3.connect(database).execute("SELECT COUNT(*) FROM runs").fetchone()[0]
+        check(runs == 1, "upstream name: %d runs in the database, expected 1" % runs)
 
 
 def repeated_instances(adsd, problems, work):
@@ -280,7 +304,7 @@ def main():
     parser.add_argument("--problems", required=True)
     parser.add_argument("--work", required=True)
     args = parser.parse_args()
-    statistics = shutil.which("ompl_benchmark_statistics")
+    statistics = statistics_program()
     if statistics is None:
         sys.exit("ompl_benchmark_statistics is not on PATH (Debian package ompl-demos)")
     cfg = os.path.join(args.problems, "thin_wall.cfg")
@@ -293,6 +317,7 @@ def main():
     full_run(args.adsd, cfg, args.work)
     repeated_instances(args.adsd, args.problems, args.work)
     shards(args.adsd, cfg, args.work, statistics)
+    upstream_name(args.adsd, cfg, args.work, statistics)
 
     if failures:
         print("%d check(s) failed" % len(failures))
