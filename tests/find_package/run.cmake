@@ -88,6 +88,23 @@ if(NOT rc OR NOT out MATCHES "adsd has no component 'geometry' \\(this install h
   message(FATAL_ERROR "asking for component 'geometry': exit ${rc}, expected its refusal by name:\n${out}")
 endif()
 
+if(WITH_PLANNER)
+  # An OMPL of another major.minor than the one adsd::planner was compiled against is refused at
+  # configure time, naming both: it would link and then misbehave (OMPL's binary interface changes
+  # with its minor version). OMPL 2.0 is not a Debian 12 package, so it is stood for by a package
+  # config that only declares its version, which is all the check reads.
+  set(other_ompl "${WORK_DIR}/ompl-2.0.2-config")
+  file(WRITE "${other_ompl}/omplConfig.cmake" "set(OMPL_FOUND TRUE)\n")
+  file(WRITE "${other_ompl}/omplConfigVersion.cmake"
+       "set(PACKAGE_VERSION 2.0.2)\nset(PACKAGE_VERSION_COMPATIBLE TRUE)\n")
+  execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}/other_ompl"
+                          "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" "-Dompl_DIR=${other_ompl}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT rc OR NOT out MATCHES "built against OMPL [0-9.]+, but OMPL '2\\.0\\.2' was found")
+    message(FATAL_ERROR "an OMPL 2.0.2 package config: exit ${rc}, expected the version's refusal:\n${out}")
+  endif()
+endif()
+
 build_and_run("the consumer" "${SOURCE_DIR}" build consumer "-DWITH_PLANNER=${WITH_PLANNER}")
 if(WITH_PLANNER)
   # The installed program finds its shipped problems from its own location (PREFIX/share/adsd).
