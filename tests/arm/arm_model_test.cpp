@@ -797,6 +797,30 @@ TEST(ArmModel, XmlNestedTooDeeplyIsRefusedBeforeParsing) {
   EXPECT_EQ(shallow.links.size(), 1u);
 }
 
+// A chain of fixed links as long as the reader takes is read; one more link is refused before
+// urdfdom parses the file (a chain of 200 000 crashed urdfdom's recursive parse).
+TEST(ArmModel, MoreLinksThanTheReaderTakesAreRefusedBeforeUrdfdom) {
+  test::ScratchDir dir;
+  auto chain = [](int links) {
+    std::string text = "<robot name=\"chain\">\n<link name=\"l0\"/>\n";
+    for (int i = 1; i < links; ++i) {
+      const std::string n = std::to_string(i), parent = std::to_string(i - 1);
+      text += "<link name=\"l" + n + "\"/><joint name=\"j" + n + "\" type=\"fixed\"><parent link=\"l" + parent +
+              "\"/><child link=\"l" + n + "\"/></joint>\n";
+    }
+    return text + "</robot>\n";
+  };
+  EXPECT_EQ(readUrdf(dir.write("longest.urdf", chain(10000))).links.size(), 10000u);
+  const std::string tooLong = dir.write("too_long.urdf", chain(10001));
+  try {
+    readUrdf(tooLong);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), tooLong + ": 10001 <link> elements, more than the 10000 the reader takes (a robot "
+                                                "has tens)");
+  }
+}
+
 // TinyXML reports row 0 where it does not know the place (an empty file, one cut off): the line is
 // left out then, and given where it is known (was ":0:" for both).
 TEST(ArmModel, XmlErrorsGiveTheLineWhenTinyXmlKnowsIt) {
