@@ -295,6 +295,35 @@ TEST(SrdfGroups, ChainIsThePathBetweenItsLinks) {
   EXPECT_THROW(chain("head", "head"), InputError);  // no joint: a group that moves nothing
 }
 
+// Groups including groups: a chain of them deeper than 100 is refused at the inclusion that goes
+// too deep (30 000 crashed the expansion's recursion), and a group included many times over is
+// expanded once (40 groups each including the next twice were expanded 2^40 times, never ending).
+TEST(SrdfGroups, DeepAndRepeatedInclusionsAreBounded) {
+  test::ScratchDir dir;
+  const ArmModel m = readUrdf(armTestData("slider_arm.urdf"));
+  const std::string joint = m.joints[m.activeJoints.front()].name;
+  const auto groups = [&](int count, int includes) {
+    std::string text = "<robot name=\"slider_arm\">\n";
+    for (int i = 0; i < count; ++i) {
+      text += "<group name=\"g" + std::to_string(i) + "\">";
+      for (int k = 0; k < includes; ++k) text += "<group name=\"g" + std::to_string(i + 1) + "\"/>";
+      text += "</group>\n";
+    }
+    return text + "<group name=\"g" + std::to_string(count) + "\"><joint name=\"" + joint + "\"/></group>\n</robot>\n";
+  };
+  EXPECT_EQ(srdfGroupJoints(m, dir.write("repeated.srdf", groups(40, 2)), "g0").value(),
+            std::vector<std::string>({joint}));
+  EXPECT_EQ(srdfGroupJoints(m, dir.write("deepest.srdf", groups(100, 1)), "g0").value(),
+            std::vector<std::string>({joint}));
+  const std::string tooDeep = dir.write("too_deep.srdf", groups(2000, 1));
+  try {
+    srdfGroupJoints(m, tooDeep, "g0");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), tooDeep + ":102: groups include groups more than 100 deep");
+  }
+}
+
 // A URDF named as the SRDF was read as an SRDF disabling nothing, and an SRDF of another robot
 // without a word (adversarial sweep): the first is refused, the second warned of, as MoveIt does.
 TEST(ArmCollisionPairs, SrdfThatIsAUrdfOrOfAnotherRobot) {
