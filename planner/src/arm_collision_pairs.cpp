@@ -1,6 +1,7 @@
 #include "adsd/planner/arm_collision_pairs.h"
 
 #include <cstdint>
+#include <map>
 
 #include <tinyxml.h>
 
@@ -121,18 +122,22 @@ std::vector<std::string> disablePairsFromSrdf(const ArmModel& model, const std::
     warnings.push_back(srdfPath + ":" + std::to_string(robot->Row()) + ": the SRDF is for robot '" + name +
                        "', the URDF " + model.sourceFile + " is robot '" + model.name + "' (read on, as MoveIt does)");
   }
+  // Links by name, looked up once per element: ArmModel::linkIndex scans the links, which for a
+  // file of many elements on a robot of many links took time quadratic in them.
+  std::map<std::string, std::size_t> linkByName;
+  for (std::size_t l = 0; l < model.links.size(); ++l) linkByName.emplace(model.links[l].name, l);
   // A pair element's two links, as indices of the model.
   const auto linkPair = [&](const TiXmlElement* e) {
     const std::string where = srdfPath + ":" + std::to_string(e->Row());
     const char* link1 = e->Attribute("link1");
     const char* link2 = e->Attribute("link2");
     if (!link1 || !link2) throw InputError(where + ": <" + e->Value() + "> needs link1= and link2=");
-    try {
-      return std::make_pair(model.linkIndex(link1), model.linkIndex(link2));
-    } catch (const InputError&) {
+    const auto first = linkByName.find(link1), second = linkByName.find(link2);
+    if (first == linkByName.end() || second == linkByName.end()) {
       throw InputError(where + ": <" + e->Value() + "> names a link that " + model.sourceFile + " lacks ('" + link1 +
                        "', '" + link2 + "')");
     }
+    return std::make_pair(first->second, second->second);
   };
   // MoveIt's allowed collision matrix from an SRDF: a link of <disable_default_collisions> is
   // unchecked against every other link but the pairs <enable_collisions> names, and the pairs of
@@ -149,12 +154,11 @@ std::vector<std::string> disablePairsFromSrdf(const ArmModel& model, const std::
     const std::string where = srdfPath + ":" + std::to_string(e->Row()) + ": <disable_default_collisions>";
     const char* link = e->Attribute("link");
     if (!link) throw InputError(where + " needs link=");
-    std::size_t a = 0;
-    try {
-      a = model.linkIndex(link);
-    } catch (const InputError&) {
+    const auto found = linkByName.find(link);
+    if (found == linkByName.end()) {
       throw InputError(where + " names a link that " + model.sourceFile + " lacks ('" + link + "')");
     }
+    const std::size_t a = found->second;
     for (std::size_t b = 0; b < n; ++b) {
       if (b != a && !reenabled[a * n + b]) pairs.disable(a, b, "SRDF default");
     }
