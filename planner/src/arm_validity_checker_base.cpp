@@ -29,6 +29,10 @@ ArmScratch& threadScratch() {
 /// about as cheap as testing two more nodes.
 constexpr std::uint32_t kObstacleLeafParts = 4;
 
+/// Obstacle parts from which the clearance queries measure a first pair before their broad phase
+/// (firstPair): with fewer, visiting every part costs less than the pair they may measure twice.
+constexpr std::size_t kPartsForAFirstPair = 64;
+
 /// Gap between two boxes given by centre and half extents (0 when they overlap), squared.
 double boxGap2(const Vec3& c1, const Vec3& h1, const Vec3& c2, const Vec3& h2) {
   const Vec3 gap = ((c1 - c2).cwiseAbs() - h1 - h2).cwiseMax(0.0);
@@ -330,10 +334,8 @@ double ArmValidityCheckerBase::broadPhase(const std::vector<Pose>& linkPoses, do
     ball = ballHeap.data(), boxCentre = centreHeap.data(), boxHalf = halfHeap.data();
   }
   for (std::size_t b = 0; b < n; ++b) {
-    const Pose& pose = linkPoses[linkOfBody_[b]];
-    ball[b] = pose * ballCentres_[b];
-    boxCentre[b] = pose * linkBoxes_[b].center();
-    boxHalf[b] = pose.linear().cwiseAbs() * (0.5 * linkBoxes_[b].sizes());
+    ball[b] = linkPoses[linkOfBody_[b]] * ballCentres_[b];
+    posedLinkBox(linkPoses, b, boxCentre[b], boxHalf[b]);
   }
   // Link × obstacle: down the parts' box tree while the link's box can reach a node's; at a leaf,
   // the box gap first (cheap), the ball gap only for the pairs it keeps.
@@ -356,6 +358,38 @@ double ArmValidityCheckerBase::broadPhase(const std::vector<Pose>& linkPoses, do
     pairs.push_back({std::max({0.0, balls, std::sqrt(box2)}), a, b});
   }
   return slack;
+}
+
+void ArmValidityCheckerBase::posedLinkBox(const std::vector<Pose>& linkPoses, std::size_t body, Vec3& centre,
+                                          Vec3& half) const {
+  const Pose& pose = linkPoses[linkOfBody_[body]];
+  centre = pose * linkBoxes_[body].center();
+  half = pose.linear().cwiseAbs() * (0.5 * linkBoxes_[body].sizes());
+}
+
+bool ArmValidityCheckerBase::firstPair(const std::vector<Pose>& linkPoses, std::size_t& body,
+                                       std::size_t& part) const {
+  if (obstacleTree_.empty()) return false;
+  // Each link down the tree into the child whose box is nearer its own, to a leaf, and there the
+  // part whose box is nearest; of all links, the pair of the nearest boxes.
+  double nearestGap2 = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < linkOfBody_.size(); ++b) {
+    Vec3 centre, half;
+    posedLinkBox(linkPoses, b, centre, half);
+    const ObstacleNode* node = &obstacleTree_[0];
+    while (node->left >= 0) {
+      const ObstacleNode& left = obstacleTree_[static_cast<std::size_t>(node->left)];
+      const ObstacleNode& right = obstacleTree_[static_cast<std::size_t>(node->right)];
+      node = boxGap2(centre, half, left.centre, left.half) <= boxGap2(centre, half, right.centre, right.half) ? &left
+                                                                                                          : &right;
+    }
+    for (std::uint32_t k = node->first; k < node->first + node->count; ++k) {
+      const std::size_t e = obstacleOrder_[k];
+      const double gap2 = boxGap2(centre, half, obstacleCentres_[e], obstacleHalves_[e]);
+      if (gap2 < nearestGap2) nearestGap2 = gap2, body = b, part = e;
+    }
+  }
+  return std::isfinite(nearestGap2);
 }
 
 bool ArmValidityCheckerBase::separatedAbove(const std::vector<Pose>& linkPoses, double margin) const {
@@ -382,15 +416,27 @@ double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, 
   if (heldByALinkSolid(linkPoses, [&](std::size_t, std::size_t held) { return !obstaclesOnly || held >= bodies; })) {
     return 0.0;
   }
-  thread_local std::vector<PairBound> pairs;
-  const double slack = broadPhase(linkPoses, cap, pairs);
+  // With many obstacle parts, one link-part pair measured first bounds the distance, so that the
+  // broad phase visits only the parts within it, not every part against every link: visiting it
+  // first is what the loop below would do with it, and the answer is the same. The KR5 among
+  // 20 000 small boxes (adsd plan --objective clearance --planner rrtstar): 13.5 ms per clearance
+  // query before, linear in the boxes, 0.64 ms with this; among 1 000, 0.35 ms before, 0.08 after.
   const std::size_t n = linkOfBody_.size();
+  double first = cap;
+  std::size_t body = 0, part = 0;
+  if (obstacleCentres_.size() >= kPartsForAFirstPair && firstPair(linkPoses, body, part)) {
+    const PairDistance d = pairDistance(body, linkPoses[linkOfBody_[body]], n + part, Pose::Identity(), cap);
+    if (!d.reachedCap) first = std::min(cap, d.lower);
+    if (first <= 0.0) return first;  // in contact
+  }
+  thread_local std::vector<PairBound> pairs;
+  const double slack = broadPhase(linkPoses, first, pairs);
   if (obstaclesOnly) {
     pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [n](const PairBound& p) { return p.b < n; }), pairs.end());
   }
   const auto fartherFirst = [](const PairBound& x, const PairBound& y) { return x.lower > y.lower; };
   std::make_heap(pairs.begin(), pairs.end(), fartherFirst);
-  double best = cap;  // a lower bound on the distance, valid for every pair visited or skipped
+  double best = first;  // a lower bound on the distance, valid for every pair visited or skipped
   while (!pairs.empty()) {
     std::pop_heap(pairs.begin(), pairs.end(), fartherFirst);
     const PairBound p = pairs.back();
@@ -428,13 +474,32 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
   });
   // At most 0: the caller rejects, as the pairs' loop below stops at 0 without their minimum.
   if (inside < cap) return inside;
-  thread_local std::vector<PairBound> pairs;
-  // Every pair: each has its own weight, so no one distance limit culls them here.
-  const double slack = broadPhase(linkPoses, std::numeric_limits<double>::infinity(), pairs);
   const std::size_t n = linkOfBody_.size();
   const auto weightOf = [&](const PairBound& p) {
     return p.b < n ? selfPairWeights[selfPairIndex_[p.a * n + p.b]] : linkWeights[linkOfBody_[p.a]];
   };
+  double best = cap;
+  // Each pair has its own weight, so the broad phase culls by distance only below what no pair,
+  // at the largest weight, can beat best by: with many obstacle parts, one link-part pair measured
+  // first sets it (as distanceUpTo does; visiting it first is what the loop below would do).
+  double limit = std::numeric_limits<double>::infinity();
+  std::size_t body = 0, part = 0;
+  if (obstacleCentres_.size() >= kPartsForAFirstPair && firstPair(linkPoses, body, part)) {
+    const double w = linkWeights[linkOfBody_[body]];
+    const double needed = cap * w + subtract;
+    if (w > 0.0 && needed > 0.0) {
+      const PairDistance d = pairDistance(body, linkPoses[linkOfBody_[body]], n + part, Pose::Identity(), needed);
+      if (!d.reachedCap) best = std::min(best, (d.lower - subtract) / w);
+      if (best <= 0.0) return best;  // within the margin: the caller rejects
+      double heaviest = 0.0;
+      for (std::size_t b = 0; b < n; ++b) heaviest = std::max(heaviest, linkWeights[linkOfBody_[b]]);
+      for (std::size_t k = 0; k < selfPairs_.size(); ++k) heaviest = std::max(heaviest, selfPairWeights[k]);
+      // A pair whose distance bound passes this has a key of at least best (weights <= heaviest).
+      limit = std::max(0.0, best * heaviest + subtract);
+    }
+  }
+  thread_local std::vector<PairBound> pairs;
+  const double slack = broadPhase(linkPoses, limit, pairs);
   // The key of a pair: a lower bound of its weighted clearance (its distance bound less the
   // roundoff allowance); weightless pairs leave, the rest are visited smallest key first.
   std::size_t kept = 0;
@@ -445,7 +510,6 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
   pairs.resize(kept);
   const auto fartherFirst = [](const PairBound& x, const PairBound& y) { return x.lower > y.lower; };
   std::make_heap(pairs.begin(), pairs.end(), fartherFirst);
-  double best = cap;
   while (!pairs.empty()) {
     std::pop_heap(pairs.begin(), pairs.end(), fartherFirst);
     const PairBound p = pairs.back();

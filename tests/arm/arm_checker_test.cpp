@@ -362,5 +362,73 @@ TEST(ArmValidityChecker, Kr5AmongManyPartsEqualsTheBruteForce) {
   EXPECT_LT(valid, states);
 }
 
+// Among more obstacle parts than the first-pair threshold (64), the clearance queries measure one
+// link-post pair before their broad phase and cull by it: their answers still equal the brute
+// force's, pair by pair, weighted ones (the certified motion check's) included.
+TEST(ArmValidityChecker, Kr5AmongMorePartsThanTheFirstPairThresholdEqualsTheBruteForce) {
+  ADSD_REQUIRE_ROBOTS();
+  const ArmScene scene = test::kr5PostGridScene();
+  ASSERT_GE(scene.environment.size(), 64u);
+  auto si = spaceFor(*scene.model);
+  auto ours = std::make_shared<ArmValidityChecker>(si, scene);
+  const auto* space = si->getStateSpace()->as<ArmStateSpace>();
+  ompl::base::ScopedState<> s(si->getStateSpace());
+  const ArmModel& model = *scene.model;
+  const std::vector<std::pair<std::size_t, std::size_t>> selfPairs = scene.selfPairs.enabledPairs();
+  std::vector<double> q(space->dof()), linkWeights(model.links.size()), pairWeights(selfPairs.size());
+  std::vector<Pose> poses;
+  DistanceScratch scratch;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int valid = 0;
+  const int states = statesToCheck(40, 15);
+  for (int i = 0; i < states; ++i) {
+    test::uniformJoints(model, rng, q.data());
+    space->fromJoints(q.data(), s.get());
+    // Random weights (a fifth of them 0) and subtrahend for the weighted query.
+    for (double& w : linkWeights) w = unit(rng) < 0.2 ? 0.0 : 0.05 + 5.0 * unit(rng);
+    for (double& w : pairWeights) w = unit(rng) < 0.2 ? 0.0 : 0.05 + 5.0 * unit(rng);
+    const double subtract = 0.01 * unit(rng), cap = 0.5;
+    // The brute force: every link against every post, every enabled link pair, exactly.
+    forwardKinematics(model, q.data(), poses);
+    const auto exact = [&](std::size_t link, const Mesh& other, const Pose& otherPose) {
+      return distance(*model.links[link].collision, poses[link], other, otherPose, DistanceOptions::exactDistance(),
+                      scratch).distance;
+    };
+    double obstacles = std::numeric_limits<double>::infinity(), links = obstacles, weighted = obstacles;
+    for (std::size_t l = 0; l < model.links.size(); ++l) {
+      if (!model.links[l].collision) continue;
+      for (const Mesh& post : scene.environment) {
+        const double d = exact(l, post, Pose::Identity());
+        obstacles = std::min(obstacles, d);
+        if (linkWeights[l] > 0.0) weighted = std::min(weighted, (d - subtract) / linkWeights[l]);
+      }
+    }
+    for (std::size_t k = 0; k < selfPairs.size(); ++k) {
+      const auto [a, b] = selfPairs[k];
+      const double d = exact(a, *model.links[b].collision, poses[b]);
+      links = std::min(links, d);
+      if (pairWeights[k] > 0.0) weighted = std::min(weighted, (d - subtract) / pairWeights[k]);
+    }
+    const double expected = std::min(obstacles, links);
+    const double tolerance = 1e-9 + 1e-10 * ours->scale();
+    EXPECT_NEAR(ours->clearance(s.get()), expected, tolerance) << "state " << i;
+    EXPECT_NEAR(ours->obstacleClearanceUpTo(s.get(), std::numeric_limits<double>::infinity()), obstacles, tolerance)
+        << "state " << i;
+    valid += expected > 0.0;
+    const double got = ours->weightedClearanceUpTo(s.get(), linkWeights.data(), pairWeights.data(), subtract, cap);
+    if (weighted <= 0.0) {  // the check rejects at once: any pair's value at or below 0 is the answer
+      EXPECT_LE(got, 4.0 * tolerance) << "state " << i;
+      EXPECT_GE(got, weighted - 4.0 * tolerance) << "state " << i;
+    } else if (weighted < cap) {
+      EXPECT_NEAR(got, weighted, 4.0 * tolerance) << "state " << i;
+    } else {
+      EXPECT_GE(got, cap - 4.0 * tolerance) << "state " << i;
+    }
+  }
+  EXPECT_GT(valid, states / 10);
+  EXPECT_LT(valid, states);
+}
+
 }  // namespace
 }  // namespace adsd::planner

@@ -103,4 +103,19 @@ inline ArmScene kr5PostsScene() {
   return makeArmScene(model, posts);
 }
 
+/// The KR5 among 216 thin posts (4 cm square, 0.8 m high) on a 0.25 m grid around its base: more
+/// obstacle parts than the clearance queries' first-pair threshold (kPartsForAFirstPair, 64).
+inline ArmScene kr5PostGridScene() {
+  auto model = std::make_shared<const ArmModel>(readUrdf(kr5Urdf()));
+  const Pose base = kr5BasePose(*model);
+  std::vector<Mesh> posts;
+  for (int i = -7; i <= 7; ++i) {
+    for (int j = -7; j <= 7; ++j) {
+      if (std::abs(i) <= 1 && std::abs(j) <= 1) continue;  // the robot's own square
+      posts.push_back(placedBox(Vec3(0.04, 0.04, 0.8), Vec3(0.25 * i, 0.25 * j, 0.4), base, "post"));
+    }
+  }
+  return makeArmScene(model, posts);
+}
+
 }  // namespace adsd::planner::test

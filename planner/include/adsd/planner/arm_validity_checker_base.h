@@ -143,6 +143,12 @@ class ArmValidityCheckerBase : public ompl::base::StateValidityChecker {
   template <class Visit>
   bool forObstaclePartsNear(const Vec3& centre, const Vec3& half, double reach2, Visit visit) const;
   double broadPhase(const std::vector<Pose>& linkPoses, double limit, std::vector<PairBound>& pairs) const;
+  /// Link body \p body's box at these poses, in the world frame (centre, half extents).
+  void posedLinkBox(const std::vector<Pose>& linkPoses, std::size_t body, Vec3& centre, Vec3& half) const;
+  /// The clearance queries' first pair, measured before their broad phase when the scene has many
+  /// obstacle parts: a link body and the obstacle part its box is nearest, found by a descent of
+  /// the parts' box tree. False without obstacle parts.
+  bool firstPair(const std::vector<Pose>& linkPoses, std::size_t& body, std::size_t& part) const;
   bool separatedAbove(const std::vector<Pose>& linkPoses, double margin) const;
   /// isValid's answer for the links at \p linkPoses (a state within bounds).
   bool validAt(const std::vector<Pose>& linkPoses) const;
