@@ -133,6 +133,10 @@ bool RigidBodyValidityChecker::separatedAbove(const Pose& robotPose, double marg
 }
 
 double RigidBodyValidityChecker::distanceUpTo(const Pose& robotPose, double cap) const {
+  // Nothing asked for: 0 is a lower bound of every distance. (A cap of 0 reached the distance
+  // query as a cap, which it refuses: an InputError thrown into the caller for every state whose
+  // broad phase kept a pair, an outside review.)
+  if (!(cap > 0.0)) return 0.0;
   thread_local std::vector<PairBound> pairs;
   const double slack = broadPhase(robotPose, cap, pairs);
   // Nearest first, from a heap: the bound usually passes the remaining pairs' bounds after a few.

@@ -427,6 +427,21 @@ TEST(CheckerSettings, ValidityWithABoundedClearanceIsTheThresholdQuerysToo) {
   }
 }
 
+// A cap of 0 asks for nothing beyond a lower bound of at least min(clearance, 0): 0, for a state in
+// contact as for one clear of the wall (it threw the distance query's "cap must be > 0" wherever
+// the broad phase kept a pair: an outside review).
+TEST(CheckerSettings, ACapOfZeroIsAnsweredZero) {
+  const SceneFixture f = test::thinWallFixture();
+  MeshValidityChecker checker(f.si, f.scene);
+  ompl::base::ScopedState<ompl::base::SE2StateSpace> s(f.si);
+  s->setYaw(0.0);
+  // The bar's face touches the wall's at x = -0.02: overlapping, touching, and 1e-6 to 1 clear.
+  for (const double gap : {-0.01, 0.0, 1e-6, 1e-3, 0.1, 1.0}) {
+    s->setXY(-0.02 - gap, -1.0);
+    EXPECT_NO_THROW(EXPECT_EQ(checker.clearanceUpTo(s.get(), 0.0), 0.0)) << "gap " << gap;
+  }
+}
+
 // States the distance query cannot take are invalid at clearance 0 from every call, not an
 // exception thrown into the planner (x = 1e300) or an answer for some rotation (a quaternion of
 // no length answered 1.38 in the bug trap); a bad cap and null pointers are the caller's errors,
