@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <sstream>
 
-#include <ompl/base/objectives/MaximizeMinClearanceObjective.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/samplers/BridgeTestValidStateSampler.h>
 #include <ompl/base/samplers/GaussianValidStateSampler.h>
@@ -20,6 +19,7 @@
 #if ADSD_PLANNER_HAS_FCL
 #include "adsd/planner/fcl_validity_checker.h"
 #endif
+#include "adsd/planner/rigid_body_clearance_objective.h"
 #include "adsd/planner/state_pose.h"
 
 namespace adsd::planner {
@@ -172,7 +172,7 @@ void PlanningProblem::build(const Pose& start, const Pose& goal, const std::opti
 
   ob::OptimizationObjectivePtr objective;
   if (objective_ == ObjectiveKind::maxMinClearance) {
-    objective = std::make_shared<ob::MaximizeMinClearanceObjective>(si);
+    objective = std::make_shared<RigidBodyClearanceObjective>(si);
   } else {
     objective = std::make_shared<ob::PathLengthOptimizationObjective>(si);
   }
