@@ -367,7 +367,8 @@ TEST(ArmValidityChecker, Kr5AmongManyPartsEqualsTheBruteForce) {
 // force's, pair by pair, weighted ones (the certified motion check's) included.
 TEST(ArmValidityChecker, Kr5AmongMorePartsThanTheFirstPairThresholdEqualsTheBruteForce) {
   ADSD_REQUIRE_ROBOTS();
-  const ArmScene scene = test::kr5PostGridScene();
+  // 216 posts, 4 cm square, 0.25 m apart: more parts than the threshold (kPartsForAFirstPair).
+  const ArmScene scene = test::kr5PostsScene(7, 0.25, 0.04);
   ASSERT_GE(scene.environment.size(), 64u);
   auto si = spaceFor(*scene.model);
   auto ours = std::make_shared<ArmValidityChecker>(si, scene);

@@ -88,31 +88,18 @@ inline ArmScene kr5BoxScene() {
                              });
 }
 
-/// The KR5 among 40 posts (8 cm square, 0.8 m high) on a 0.2 m grid around its base, in its
-/// base_link frame: enough obstacle parts for the broad phase's box tree to have several levels.
-inline ArmScene kr5PostsScene() {
+/// The KR5 among posts 0.8 m high and \p side square, \p spacing apart on a grid reaching
+/// \p rings posts out from its base (the robot's own square left free), in its base_link frame.
+/// By default 40 posts (8 cm, 0.2 m apart): enough obstacle parts for the broad phase's box tree
+/// to have several levels.
+inline ArmScene kr5PostsScene(int rings = 3, double spacing = 0.2, double side = 0.08) {
   auto model = std::make_shared<const ArmModel>(readUrdf(kr5Urdf()));
   const Pose base = kr5BasePose(*model);
   std::vector<Mesh> posts;
-  for (int i = -3; i <= 3; ++i) {
-    for (int j = -3; j <= 3; ++j) {
+  for (int i = -rings; i <= rings; ++i) {
+    for (int j = -rings; j <= rings; ++j) {
       if (std::abs(i) <= 1 && std::abs(j) <= 1) continue;  // the robot's own square
-      posts.push_back(placedBox(Vec3(0.08, 0.08, 0.8), Vec3(0.2 * i, 0.2 * j, 0.4), base, "post"));
-    }
-  }
-  return makeArmScene(model, posts);
-}
-
-/// The KR5 among 216 thin posts (4 cm square, 0.8 m high) on a 0.25 m grid around its base: more
-/// obstacle parts than the clearance queries' first-pair threshold (kPartsForAFirstPair, 64).
-inline ArmScene kr5PostGridScene() {
-  auto model = std::make_shared<const ArmModel>(readUrdf(kr5Urdf()));
-  const Pose base = kr5BasePose(*model);
-  std::vector<Mesh> posts;
-  for (int i = -7; i <= 7; ++i) {
-    for (int j = -7; j <= 7; ++j) {
-      if (std::abs(i) <= 1 && std::abs(j) <= 1) continue;  // the robot's own square
-      posts.push_back(placedBox(Vec3(0.04, 0.04, 0.8), Vec3(0.25 * i, 0.25 * j, 0.4), base, "post"));
+      posts.push_back(placedBox(Vec3(side, side, 0.8), Vec3(spacing * i, spacing * j, 0.4), base, "post"));
     }
   }
   return makeArmScene(model, posts);
