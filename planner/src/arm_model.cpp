@@ -63,9 +63,9 @@ void ArmModel::buildHierarchies() {
 
 namespace {
 
-/// The most links a URDF may have. Robots have tens (the WAM 9, Atlas 30); urdfdom's parse
-/// recurses once per level of the tree and crashed (stack overflow) on a chain of 200 000 fixed
-/// links, and reading took 72 s and 2.7 GB for 100 000 (0.9 s for 10 000).
+/// The most links a URDF may have. Robots have tens (the WAM 9, Atlas 35, DRC-Hubo 52); urdfdom's
+/// parse recurses once per level of the tree and crashed (stack overflow) on a chain of 200 000
+/// fixed links, and `adsd srdf` took 72 s and 2.7 GB on 100 000 (0.9 s on 10 000).
 constexpr std::size_t kMaxUrdfLinks = 10000;
 
 /// What urdfdom does not say clearly (it logs a line and returns null, or drops an element),
