@@ -424,8 +424,10 @@ double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, 
   const std::size_t n = linkOfBody_.size();
   double first = cap;
   std::size_t body = 0, part = 0;
+  bool measuredFirst = false;
   if (obstacleCentres_.size() >= kPartsForAFirstPair && firstPair(linkPoses, body, part)) {
     const PairDistance d = pairDistance(body, linkPoses[linkOfBody_[body]], n + part, Pose::Identity(), cap);
+    measuredFirst = true;
     if (!d.reachedCap) first = std::min(cap, d.lower);
     if (first <= 0.0) return first;  // in contact
   }
@@ -442,6 +444,7 @@ double ArmValidityCheckerBase::distanceUpTo(const std::vector<Pose>& linkPoses, 
     const PairBound p = pairs.back();
     pairs.pop_back();
     if (p.lower > best + slack) break;  // this pair and all left are no nearer than `best`
+    if (measuredFirst && p.a == body && p.b == n + part) continue;  // measured before the broad phase
     const Pose& poseA = linkPoses[linkOfBody_[p.a]];
     const Pose poseB = p.b < n ? linkPoses[linkOfBody_[p.b]] : Pose::Identity();
     const PairDistance d = pairDistance(p.a, poseA, p.b, poseB, best);
@@ -484,11 +487,13 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
   // first sets it (as distanceUpTo does; visiting it first is what the loop below would do).
   double limit = std::numeric_limits<double>::infinity();
   std::size_t body = 0, part = 0;
+  bool measuredFirst = false;
   if (obstacleCentres_.size() >= kPartsForAFirstPair && firstPair(linkPoses, body, part)) {
     const double w = linkWeights[linkOfBody_[body]];
     const double needed = cap * w + subtract;
     if (w > 0.0 && needed > 0.0) {
       const PairDistance d = pairDistance(body, linkPoses[linkOfBody_[body]], n + part, Pose::Identity(), needed);
+      measuredFirst = true;
       if (!d.reachedCap) best = std::min(best, (d.lower - subtract) / w);
       if (best <= 0.0) return best;  // within the margin: the caller rejects
       double heaviest = 0.0;
@@ -515,6 +520,7 @@ double ArmValidityCheckerBase::weightedClearanceUpTo(const ompl::base::State* st
     const PairBound p = pairs.back();
     pairs.pop_back();
     if (p.lower >= best) break;  // this pair and all left are no nearer, weighted
+    if (measuredFirst && p.a == body && p.b == n + part) continue;  // measured before the broad phase
     const double w = weightOf(p);
     const Pose& poseA = linkPoses[linkOfBody_[p.a]];
     const Pose poseB = p.b < n ? linkPoses[linkOfBody_[p.b]] : Pose::Identity();
