@@ -528,6 +528,43 @@ TEST(ArmModel, MimicJointsThatCannotFollowAreRefusedNamingTheJoint) {
                                                                    "<mimic joint=\"j1\" multiplier=\"-2\"/>")))));
 }
 
+// A chain of followers composes its multipliers and offsets whichever way the URDF orders it:
+// here j4 follows j2, which follows j3, which follows the one coordinate j1, and a follower comes
+// both before and after its leader. Each joint's chain is composed once and reused by the joints
+// that reach it. By hand, for the leader at q: j3 = 3q - 0.1, j2 = -0.5 j3 + 0.2 = -1.5q + 0.25,
+// j4 = 2 j2 + 0.1 = -3q + 0.6.
+TEST(ArmModel, MimicChainsComposeWhicheverOrderTheirJointsComeIn) {
+  test::ScratchDir dir;
+  const auto joint = [](const std::string& name, const std::string& parent, const std::string& child,
+                        const std::string& mimic) {
+    return "<joint name=\"" + name + "\" type=\"revolute\"><parent link=\"" + parent + "\"/><child link=\"" +
+           child + "\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>" +
+           mimic + "</joint>";
+  };
+  const ArmModel m = readUrdf(dir.write(
+      "chain.urdf",
+      "<robot name=\"r\"><link name=\"a\"><collision><geometry><box size=\"1 1 1\"/></geometry></collision>"
+      "</link><link name=\"b\"/><link name=\"c\"/><link name=\"d\"/><link name=\"e\"/>" +
+          joint("j4", "a", "b", "<mimic joint=\"j2\" multiplier=\"2\" offset=\"0.1\"/>") +
+          joint("j2", "a", "c", "<mimic joint=\"j3\" multiplier=\"-0.5\" offset=\"0.2\"/>") +
+          joint("j1", "a", "d", "") + joint("j3", "a", "e", "<mimic joint=\"j1\" multiplier=\"3\" offset=\"-0.1\"/>") +
+          "</robot>"));
+  ASSERT_EQ(m.dof(), 1u);
+  const struct {
+    const char* name;
+    double multiplier, offset;
+  } expected[] = {{"j2", -1.5, 0.25}, {"j3", 3.0, -0.1}, {"j4", -3.0, 0.6}};
+  for (const auto& e : expected) {
+    SCOPED_TRACE(e.name);
+    const auto found =
+        std::find_if(m.joints.begin(), m.joints.end(), [&](const ArmJoint& j) { return j.name == e.name; });
+    ASSERT_NE(found, m.joints.end());
+    EXPECT_EQ(found->mimicCoordinate, 0);
+    EXPECT_NEAR(found->mimicMultiplier, e.multiplier, 1e-15);
+    EXPECT_NEAR(found->mimicOffset, e.offset, 1e-15);
+  }
+}
+
 // urdfdom logs and drops a <collision> element it cannot read, and reads on: the link went
 // unchecked for collisions with exit 0 (adversarial sweep). Each is refused, naming the link's line.
 TEST(ArmModel, CollisionElementsUrdfdomCannotReadAreRefused) {
