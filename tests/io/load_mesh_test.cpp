@@ -129,6 +129,21 @@ TEST(LoadMesh, ObjQuadsAreTriangulatedAndCornersShared) {
   EXPECT_EQ(mesh.name(), dir.path("cube.obj"));
 }
 
+// A line ending in a backslash continues on the next (the OBJ format's rule): the backslash was
+// read as a face corner and the file refused. An error in a continued statement names the line
+// it starts on; a comment ends a statement, backslash or not.
+TEST(LoadMesh, ObjLinesEndingInABackslashContinue) {
+  TempDir dir;
+  const Mesh mesh = loadMesh(dir.write("continued.obj", "v 0 0 0\nv 1 \\\n 0 0\nv 0 2 0 \\ \r\n\n"
+                                                        "v 0 0 3 # a comment \\\nf 1 2 \\\n3\nf 1 2 4 \\"));
+  EXPECT_EQ(mesh.triangleCount(), 2u);
+  expectBounds(mesh, Vec3(0, 0, 0), Vec3(1, 2, 3));
+  const std::string range = loadError(dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 \\\n 2 \\\n 9\n"));
+  EXPECT_NE(range.find("range.obj:4: face refers to vertex 9 but the file has 3 vertices"), std::string::npos) << range;
+  const std::string word = loadError(dir.write("word.obj", "v 0 0 0\nv 1 \\\n x 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_NE(word.find("word.obj:2: vertex 2: coordinate 'x' is not a decimal number"), std::string::npos) << word;
+}
+
 TEST(LoadMesh, AsciiStl) {
   TempDir dir;
   const Mesh mesh = loadMesh(dir.write("quad.stl",

@@ -11,8 +11,10 @@
 // corners written i, i/t, i/t/n or i//n (t and n not used, but each a whole number or empty),
 // indices from 1, negative ones counting back from the last vertex read. "l" (lines) and "p"
 // (points) are counted, not surfaces; every other statement (vt, vn, o, g, s, usemtl, mtllib, ...)
-// is ignored, as are comments from '#'. An index may refer to a vertex defined later in the file;
-// one beyond the last vertex is an error naming its line.
+// is ignored, as are comments from '#'. A line ending in '\\' continues on the next, as the
+// format allows (exporters wrap long faces so); errors name the line the statement starts on. An
+// index may refer to a vertex defined later in the file; one beyond the last vertex is an error
+// naming its line.
 
 #include <algorithm>
 #include <charconv>
@@ -42,22 +44,22 @@ class ObjReader {
 
   PolygonSoup run() {
     std::string_view line;
+    std::string continued;  // a statement's lines so far, while each ends in '\\'
     while (lines_.next(line)) {
+      if (continued.empty()) statementLine_ = lines_.lineNumber();
       const std::size_t hash = line.find('#');
       if (hash != std::string_view::npos) line = line.substr(0, hash);
-      if (line.size() > kMaxWordLineBytes) {
-        throw InputError(at() + "line longer than " + std::to_string(kMaxWordLineBytes) +
-                         " bytes (a face of millions of corners?)");
+      const std::size_t last = line.find_last_not_of(" \t\r\v\f");
+      if (last != std::string_view::npos && line[last] == '\\') {
+        continued.append(line.substr(0, last)).push_back(' ');
+        requireShortLine(continued.size());
+        continue;
       }
-      const std::vector<std::string_view> tokens = splitWhitespace(line);
-      if (tokens.empty()) continue;
-      const std::string_view keyword = tokens[0];
-      if (keyword == "v") {
-        readVertex(tokens);
-      } else if (keyword == "f" || keyword == "l" || keyword == "p") {
-        readElement(tokens);
-      }
+      if (!continued.empty()) line = continued.append(line);
+      readStatement(line);
+      continued.clear();
     }
+    if (!continued.empty()) readStatement(continued);  // the file's last line ends in '\\'
     if (maxIndex_ >= static_cast<long long>(soup_.points.size())) {
       throw InputError(path_ + ":" + std::to_string(maxIndexLine_) + ": face refers to vertex " +
                        std::to_string(maxIndex_ + 1) + " but the file has " + std::to_string(soup_.points.size()) +
@@ -74,7 +76,26 @@ class ObjReader {
   }
 
  private:
-  std::string at() const { return path_ + ":" + std::to_string(lines_.lineNumber()) + ": "; }
+  std::string at() const { return path_ + ":" + std::to_string(statementLine_) + ": "; }
+
+  void requireShortLine(std::size_t bytes) const {
+    if (bytes > kMaxWordLineBytes) {
+      throw InputError(at() + "line longer than " + std::to_string(kMaxWordLineBytes) +
+                       " bytes (a face of millions of corners?)");
+    }
+  }
+
+  void readStatement(std::string_view line) {
+    requireShortLine(line.size());
+    const std::vector<std::string_view> tokens = splitWhitespace(line);
+    if (tokens.empty()) return;
+    const std::string_view keyword = tokens[0];
+    if (keyword == "v") {
+      readVertex(tokens);
+    } else if (keyword == "f" || keyword == "l" || keyword == "p") {
+      readElement(tokens);
+    }
+  }
 
   void readVertex(const std::vector<std::string_view>& tokens) {
     const std::size_t v = soup_.points.size();
@@ -149,7 +170,7 @@ class ObjReader {
         index -= 1;
         if (index > maxIndex_) {
           maxIndex_ = index;
-          maxIndexLine_ = lines_.lineNumber();
+          maxIndexLine_ = statementLine_;
         }
       }
       if (index >= UINT32_MAX) throw InputError(at() + "vertex index " + quoteToken(corner) + " beyond 2^32 - 1");
@@ -163,6 +184,7 @@ class ObjReader {
   PolygonSoup soup_;
   long long maxIndex_ = -1;
   int maxIndexLine_ = 0;
+  int statementLine_ = 0;  // where the statement being read starts
   std::uint64_t lineElements_ = 0, pointElements_ = 0;
 };
 
