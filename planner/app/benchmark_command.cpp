@@ -60,6 +60,7 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
 #include <ompl/util/RandomNumbers.h>
 
 #include "adsd/cli/command_line.h"
@@ -273,7 +274,11 @@ class MeasuredPlanner final : public ob::Planner {
   }
   void setup() override {
     ob::Planner::setup();
-    if (!planner_->isSetup()) planner_->setup();
+    try {
+      if (!planner_->isSetup()) planner_->setup();
+    } catch (const ompl::Exception& e) {  // as adsd plan: the file's planner parameters
+      throw InputError("planner " + getName() + " could not be set up with its parameters: " + e.what());
+    }
   }
   void checkValidity() override { planner_->checkValidity(); }
   void getPlannerData(ob::PlannerData& data) const override { planner_->getPlannerData(data); }
@@ -587,22 +592,6 @@ std::vector<PlannerEntry> plannersOf(const ProblemFile& file) {
   return {rrtconnect};
 }
 
-/// Sets a planner parameter; false when OMPL rejects the value, which it says by returning false
-/// (with a warning of its own, silenced: ours names the file and line) or, for numbers that do not
-/// parse, by throwing ompl::Exception.
-bool setQuietly(ob::Planner& planner, const Setting& s) {
-  const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
-  ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
-  bool accepted = false;
-  try {
-    accepted = planner.params().setParam(s.key, s.value);
-  } catch (const std::exception&) {
-    accepted = false;
-  }
-  ompl::msg::setLogLevel(level);
-  return accepted;
-}
-
 /// A planner of \p entry on \p si with the entry's parameters; warnings only when \p warn (they are
 /// the same for every combination).
 ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, ompl::geometric::SimpleSetup& ss, bool warn) {
@@ -614,15 +603,9 @@ ob::PlannerPtr makeConfiguredPlanner(const PlannerEntry& entry, ompl::geometric:
   const ob::SpaceInformationPtr& si = ss.getSpaceInformation();
   ob::PlannerPtr planner = makePlanner(entry.name, si);
   if (!planner) throw InputError(source + ": no planner named '" + entry.name + "'");
-  for (const Setting& s : entry.parameters) {
-    if (!planner->params().hasParam(s.key)) {
-      if (warn) {
-        std::cerr << "adsd benchmark: warning: " << s.location.describe() << ": " << entry.name
-                  << " has no parameter '" << s.key << "', ignored\n";
-      }
-    } else if (!setQuietly(*planner, s)) {
-      throw InputError(s.location.describe() + ": " + entry.name + " rejected the value '" + s.value + "'");
-    }
+  const std::vector<std::string> warnings = configurePlanner(*planner, entry.name, entry.parameters);
+  for (const std::string& w : warnings) {
+    if (warn) std::cerr << "adsd benchmark: warning: " << w << '\n';
   }
   return planner;
 }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <ompl/util/Console.h>
+#include <ompl/util/Exception.h>
 #include <ompl/util/RandomNumbers.h>
 #include <ompl/util/Time.h>
 
@@ -173,21 +174,8 @@ ompl::base::PlannerPtr choosePlanner(const PlanArguments& a, const ProblemFile& 
   const std::string source = a.planner || entry == nullptr ? "--planner" : entry->location.describe();
   ompl::base::PlannerPtr planner = makeNamedPlanner(chosen, problem.setup(), source);
   if (entry != nullptr) {
-    for (const Setting& s : entry->parameters) {
-      if (!planner->params().hasParam(s.key)) {
-        std::cerr << "adsd plan: warning: " << s.location.describe() << ": " << chosen << " has no parameter '"
-                  << s.key << "', ignored\n";
-      } else {
-        // OMPL answers a value it cannot convert by throwing (a non-number for a numeric
-        // parameter), and a value out of range by returning false: both are the file's error.
-        bool accepted = false;
-        try {
-          accepted = planner->params().setParam(s.key, s.value);
-        } catch (const std::exception&) {
-          accepted = false;
-        }
-        if (!accepted) throw InputError(s.location.describe() + ": " + chosen + " rejected the value '" + s.value + "'");
-      }
+    for (const std::string& w : configurePlanner(*planner, chosen, entry->parameters)) {
+      std::cerr << "adsd plan: warning: " << w << '\n';
     }
   }
   return planner;
@@ -219,7 +207,13 @@ template <class Checker>
 SolveReport solveAndSimplify(ompl::geometric::SimpleSetup& ss, const Checker& checker, const std::string& planner,
                              double seconds, bool simplify, const std::function<void()>& atSolveEnd) {
   SolveReport r;
-  ss.setup();
+  try {
+    ss.setup();
+  } catch (const ompl::Exception& e) {
+    // A planner's set-up refuses what its setters took (KPIECE a fraction below machine epsilon,
+    // STRIDE degrees that disagree): the problem file's planner parameters, not an internal error.
+    throw InputError("planner " + planner + " could not be set up with its parameters: " + e.what());
+  }
   const ompl::time::point started = ompl::time::now();
   {
     const PlannerWatchdog watchdog("adsd plan", planner, seconds, "no path written");

@@ -4,8 +4,13 @@
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 
 #include <algorithm>
+#include <cctype>
 #include <functional>
 #include <map>
+
+#include <ompl/util/Console.h>
+
+#include "adsd/error.h"
 
 #include <ompl/geometric/planners/AnytimePathShortening.h>
 #include <ompl/geometric/planners/cforest/CForest.h>
@@ -140,6 +145,68 @@ std::optional<std::string> plannerConflict(const std::string& name, const ompl::
            "rrtstar, rrtsharp or prmstar, or the clearance objective";
   }
   return std::nullopt;
+}
+
+namespace {
+
+/// A switch's value as OMPL reads it: "1" or "0" for 1/true and 0/false, nullopt for other text.
+std::optional<std::string> switchValue(std::string value) {
+  std::transform(value.begin(), value.end(), value.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (value == "1" || value == "true") return "1";
+  if (value == "0" || value == "false") return "0";
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<std::string> configurePlanner(ompl::base::Planner& planner, const std::string& name,
+                                          const std::vector<Setting>& settings) {
+  std::vector<const Setting*> order;
+  for (const Setting& s : settings) order.push_back(&s);
+  std::stable_partition(order.begin(), order.end(), [](const Setting* s) { return s->key != "ordered_sampling"; });
+  std::vector<std::string> warnings;
+  ompl::base::ParamSet& params = planner.params();
+  for (const Setting* s : order) {
+    if (!params.hasParam(s->key)) {
+      warnings.push_back(s->location.describe() + ": " + name + " has no parameter '" + s->key + "', ignored");
+      continue;
+    }
+    // OMPL's own warning on a value it rejects is silenced: ours names the file and line.
+    const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    bool accepted = false;
+    try {
+      accepted = params.setParam(s->key, s->value);
+    } catch (const std::exception&) {  // a number that does not parse
+      accepted = false;
+    }
+    ompl::msg::setLogLevel(level);
+    if (!accepted) throw InputError(s->location.describe() + ": " + name + " rejected the value '" + s->value + "'");
+  }
+  const auto reads = [&](const std::string& key, std::string& value) { return params.getParam(key, value); };
+  for (const Setting* s : order) {
+    std::string now;
+    const std::optional<std::string> wanted = switchValue(s->value);
+    if (isPlannerSwitch(s->key) && wanted && reads(s->key, now) && now != *wanted) {
+      throw InputError(s->location.describe() + ": " + name + " did not keep the value '" + s->value +
+                       "' (it reads " + now + " once all its parameters are set)");
+    }
+  }
+  // Read through RRT*'s getters: InformedRRT* samples the informed set without declaring the
+  // switch, and ordered sampling is RRT*'s alone among the registry's planners.
+  const auto* rrtStar = dynamic_cast<const ompl::geometric::RRTstar*>(&planner);
+  if (rrtStar != nullptr && rrtStar->getOrderedSampling() && !rrtStar->getInformedSampling() &&
+      !rrtStar->getSampleRejection()) {
+    auto line = std::find_if(order.begin(), order.end(), [](const Setting* s) { return s->key == "ordered_sampling"; });
+    if (line == order.end()) {
+      line = std::find_if(order.begin(), order.end(),
+                          [](const Setting* s) { return s->key == "informed_sampling" || s->key == "sample_rejection"; });
+    }
+    throw InputError((line != order.end() ? (*line)->location.describe() + ": " : std::string()) + name +
+                     ": ordered_sampling orders the samples of informed or rejection sampling, and neither is on "
+                     "(set informed_sampling = 1 or sample_rejection = 1)");
+  }
+  return warnings;
 }
 
 }  // namespace adsd::planner

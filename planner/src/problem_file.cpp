@@ -59,6 +59,14 @@ constexpr double kMaxCoordinateMagnitude = tolerance::kMaxCoordinate;
 /// OMPL's StateSpace::setLongestValidSegmentFraction throws unless the fraction f satisfies
 /// eps <= f <= 1 - eps with eps the machine epsilon of double (dimensionless).
 constexpr double kOmplSegmentFractionMargin = std::numeric_limits<double>::epsilon();
+/// CForest's threads and AnytimePathShortening's planners each run a planner of their own, all
+/// built before the time limit is watched: 100 000 ran for minutes past a 0.2 s limit and took
+/// gigabytes, 2^31 ended in bad_alloc (an adversarial review).
+constexpr std::uint64_t kMaxPlannerThreads = 256;
+/// STRIDE's GNAT tree reserves room for its degree and leaf size in every node: a leaf size of
+/// 2^31 ended in an internal error (vector::reserve), a degree of 2^31 ran 10 s past its limit.
+/// OMPL's defaults are 16 and 6.
+constexpr std::uint64_t kMaxTreeDegree = 1000;
 /// OMPL's default longest_valid_segment_fraction.
 constexpr double kOmplDefaultSegmentFraction = 0.01;
 /// The most states a discrete check of a motion across the whole space may take: 1e5, about a
@@ -244,8 +252,11 @@ enum class ValueRule {
   unitInterval,       ///< in [0, 1]
   positiveFraction,   ///< in (0, 1]
   segmentFraction,    ///< in [eps, 1 - eps] (kOmplSegmentFractionMargin)
+  fractionFromEps,    ///< in [eps, 1]
   count,              ///< a whole number in [0, 2^32 - 1] (OMPL's unsigned int)
   positiveCount,      ///< a whole number in [1, 2^32 - 1]
+  threadCount,        ///< a whole number in [1, kMaxPlannerThreads]
+  treeDegree,         ///< a whole number in [1, kMaxTreeDegree]
   text,               ///< passed as written
 };
 
@@ -280,11 +291,14 @@ std::optional<ValueRule> plannerParameterRule(const std::string& name) {
       {"use_graph_pruning", R::flag}, {"use_just_in_time_sampling", R::flag}, {"use_k_nearest", R::flag},
       {"use_projected_distance", R::flag}, {"use_strict_queue_ordering", R::flag},
       // Probabilities and fractions.
-      {"goal_bias", R::unitInterval}, {"min_valid_path_fraction", R::unitInterval},
+      {"goal_bias", R::unitInterval},
       {"prune_threshold", R::unitInterval}, {"prune_threshold_as_fractional_cost_change", R::unitInterval},
       {"frontier_node_ratio", R::unitInterval},
-      // KPIECE throws outside (0, 1]; the SPARS deltas are fractions of the space's extent.
-      {"border_fraction", R::positiveFraction}, {"failed_expansion_score_factor", R::positiveFraction},
+      // KPIECE throws outside (0, 1] when set, and its set-up below machine epsilon (1e-300 passed
+      // the setter and ended adsd plan with an internal error; an adversarial review).
+      {"border_fraction", R::positiveFraction}, {"failed_expansion_score_factor", R::fractionFromEps},
+      {"min_valid_path_fraction", R::fractionFromEps},
+      // The SPARS deltas are fractions of the space's extent.
       {"dense_delta_fraction", R::positiveFraction}, {"sparse_delta_fraction", R::positiveFraction},
       // Lengths and radii (0 for range: OMPL picks one from the space's extent).
       {"range", R::nonNegative}, {"pruning_radius", R::nonNegative}, {"selection_radius", R::nonNegative},
@@ -295,10 +309,10 @@ std::optional<ValueRule> plannerParameterRule(const std::string& name) {
       {"cost_threshold", R::anyReal},
       // Counts (OMPL's unsigned int: a negative number would wrap to about 4e9).
       {"max_nearest_neighbors", R::count}, {"max_failures", R::count}, {"rejection_variant", R::count},
-      {"degree", R::positiveCount}, {"max_degree", R::positiveCount}, {"min_degree", R::positiveCount},
-      {"max_pts_per_leaf", R::positiveCount}, {"estimated_dimension", R::positiveCount},
-      {"max_hybrid_paths", R::positiveCount}, {"num_planners", R::positiveCount}, {"num_samples", R::positiveCount},
-      {"num_threads", R::positiveCount}, {"number_sampling_attempts", R::positiveCount},
+      {"degree", R::treeDegree}, {"max_degree", R::treeDegree}, {"min_degree", R::treeDegree},
+      {"max_pts_per_leaf", R::treeDegree}, {"estimated_dimension", R::positiveCount},
+      {"max_hybrid_paths", R::positiveCount}, {"num_planners", R::threadCount}, {"num_samples", R::positiveCount},
+      {"num_threads", R::threadCount}, {"number_sampling_attempts", R::positiveCount},
       {"ordering_batch_size", R::positiveCount}, {"samples_per_batch", R::positiveCount},
       // AnytimePathShortening's list of planners.
       {"planners", R::text},
@@ -329,6 +343,12 @@ void checkValue(const Entry& e, ValueRule rule, const std::string& source) {
     case ValueRule::positiveCount:
       parseWhole(e, source, 1, kUnsignedIntMax);
       return;
+    case ValueRule::threadCount:
+      parseWhole(e, source, 1, kMaxPlannerThreads);
+      return;
+    case ValueRule::treeDegree:
+      parseWhole(e, source, 1, kMaxTreeDegree);
+      return;
     default:
       break;
   }
@@ -350,6 +370,9 @@ void checkValue(const Entry& e, ValueRule rule, const std::string& source) {
       if (!(x >= kOmplSegmentFractionMargin && x <= 1.0 - kOmplSegmentFractionMargin)) {
         fail("a number > 0 and < 1 (OMPL's bounds: 2.2e-16 to 1 - 2.2e-16)");
       }
+      break;
+    case ValueRule::fractionFromEps:
+      if (!(x >= kOmplSegmentFractionMargin && x <= 1.0)) fail("a number > 0 and <= 1 (OMPL's bounds: 2.2e-16 to 1)");
       break;
     default:
       break;
@@ -629,6 +652,8 @@ void readPlannerSection(const std::vector<Entry>& entries, const std::string& so
 }
 
 }  // namespace
+
+bool isPlannerSwitch(const std::string& name) { return plannerParameterRule(name) == ValueRule::flag; }
 
 std::string SourceLocation::describe() const {
   std::string s = file;

@@ -365,6 +365,25 @@ TEST(ProblemFileErrors, PlannerParametersOmplWouldMisreadNameTheKey) {
   // KPIECE1::setBorderFraction throws outside (0, 1].
   EXPECT_EQ(errorOf(planners + "kpiece.border_fraction = 0\n"),
             ":22: key 'planner.kpiece.border_fraction': expected a number > 0 and <= 1, got '0'");
+  // Taken by KPIECE's setters, refused by its set-up below machine epsilon: adsd plan ended in an
+  // internal error (an adversarial review).
+  EXPECT_EQ(errorOf(planners + "kpiece.min_valid_path_fraction = 0\n"),
+            ":22: key 'planner.kpiece.min_valid_path_fraction': expected a number > 0 and <= 1 (OMPL's bounds: "
+            "2.2e-16 to 1), got '0'");
+  EXPECT_EQ(errorOf(planners + "kpiece.failed_expansion_score_factor = 1e-300\n"),
+            ":22: key 'planner.kpiece.failed_expansion_score_factor': expected a number > 0 and <= 1 (OMPL's "
+            "bounds: 2.2e-16 to 1), got '1e-300'");
+  // Each of CForest's threads and AnytimePathShortening's planners is a planner of its own, built
+  // before the time limit is watched: 100 000 ran minutes past a 0.2 s limit, or aborted.
+  const std::string parallel = std::string(kSe3Start) + "[planner]\ncforest =\nanytimepathshortening =\n";
+  EXPECT_EQ(errorOf(parallel + "cforest.num_threads = 257\n"),
+            ":21: key 'planner.cforest.num_threads': expected a whole number from 1 to 256, got '257'");
+  EXPECT_EQ(errorOf(parallel + "anytimepathshortening.num_planners = 100000\n"),
+            ":21: key 'planner.anytimepathshortening.num_planners': expected a whole number from 1 to 256, got "
+            "'100000'");
+  // STRIDE's tree reserves its leaf size in every node: 2^31 ended in an internal error.
+  EXPECT_EQ(errorOf(std::string(kSe3Start) + "[planner]\nstride =\nstride.max_pts_per_leaf = 2147483647\n"),
+            ":20: key 'planner.stride.max_pts_per_leaf': expected a whole number from 1 to 1000, got '2147483647'");
 }
 
 TEST(ProblemFile, PlannerParametersOmplReadsAlikeAreKept) {

@@ -10,6 +10,8 @@
 #include <ompl/base/Planner.h>
 #include <ompl/base/SpaceInformation.h>
 
+#include "adsd/planner/problem_file.h"
+
 namespace adsd::planner {
 
 /// \brief The names makePlanner knows, in a stable order.
@@ -35,5 +37,15 @@ bool isOptimizingPlanner(const std::string& name);
 ///    the program.
 std::optional<std::string> plannerConflict(const std::string& name, const ompl::base::OptimizationObjective* objective,
                                            const ompl::base::StateSpace& space);
+
+/// \brief Sets a problem file's \p settings on \p planner (named \p name in messages), in the file's
+/// order but `ordered_sampling` last: OMPL's RRT* takes it only once informed or rejection
+/// sampling is on, whichever line says so. Returns a warning for each parameter the planner does
+/// not have (ignored). Throws InputError naming the line of a value the planner rejects (OMPL
+/// returns false or throws) or does not keep (a switch that reads otherwise once all are set),
+/// and of ordered sampling left with neither informed nor rejection sampling, with which OMPL
+/// 1.5.2's RRT* dereferences a null sampler when it sets up (an adversarial review).
+std::vector<std::string> configurePlanner(ompl::base::Planner& planner, const std::string& name,
+                                          const std::vector<Setting>& settings);
 
 }  // namespace adsd::planner

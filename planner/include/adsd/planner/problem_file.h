@@ -122,6 +122,9 @@ struct ProblemFile {
 /// "no" as true). Mesh files are not opened.
 ProblemFile readProblemFile(const std::string& path);
 
+/// \brief Whether planner parameter \p name is a switch (0, 1, true or false) of an OMPL planner.
+bool isPlannerSwitch(const std::string& name);
+
 /// \brief The same from text; \p sourceName names it in messages and \p directory resolves
 /// relative mesh paths.
 ProblemFile parseProblemFile(std::istream& in, const std::string& sourceName, const std::string& directory);
