@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <string_view>
 #include <utility>
 
 namespace adsd::cli {
@@ -72,8 +73,17 @@ std::optional<std::string> Arguments::outputFile(const std::string& name) const 
   if (!std::filesystem::is_directory(directory, ec)) {
     throw UsageError(option + "'" + *file + "': directory '" + directory.string() + "' does not exist");
   }
-  // Written through a temporary name in the same directory, then renamed: the directory itself
-  // must be writable.
+  // Written through a temporary name in the same directory (NAME.partial), then renamed: the
+  // temporary's name must fit the file system's limit (a name of 250 bytes passed here and failed
+  // once the work was done; an adversarial review), and the directory must be writable.
+  const long nameMax = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  const std::size_t longest = nameMax > 0 ? static_cast<std::size_t>(nameMax) : 255;
+  const std::size_t nameBytes = std::filesystem::path(*file).filename().string().size();
+  if (nameBytes + std::string_view(".partial").size() > longest) {
+    throw UsageError(option + "'" + *file + "': the name is " + std::to_string(nameBytes) + " bytes long; with '.partial' " +
+                     "added for the temporary it is written under, it must fit " + std::to_string(longest) +
+                     " bytes");
+  }
   if (::access(directory.c_str(), W_OK) != 0) {
     throw UsageError(option + "'" + *file + "': directory '" + directory.string() + "' is not writable");
   }

@@ -837,6 +837,16 @@ void benchmarkOne(const BenchmarkArguments& a, const BenchmarkInput& input,
   }
 
   const auto [directory, stem] = outputNames(a, input);
+  // The longest name written is a spool's, STEM.log.PID-K.progress (about 30 bytes more than the
+  // stem): a name that only fits without them failed after every run was done (an adversarial
+  // review), so it is refused before the first.
+  constexpr std::size_t kLongestSuffix = 40, kNameMax = 255;
+  if (stem.size() + kLongestSuffix > kNameMax) {
+    throw InputError(input.path + ": the problem's name makes output files named '" + stem.substr(0, 20) + "...' of " +
+                     std::to_string(stem.size()) + " bytes and more; the benchmark's files add up to " +
+                     std::to_string(kLongestSuffix) + " bytes to it, and a name may have " + std::to_string(kNameMax) +
+                     ": shorten the name (at most " + std::to_string(kNameMax - kLongestSuffix) + " bytes)");
+  }
   // Named where it came from: --out, or the problem file's `output` line.
   const std::string source = a.outDirectory || !input.outputLocation ? "--out" : input.outputLocation->describe();
   std::error_code error;

@@ -1,10 +1,12 @@
 #include "output_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 #include "adsd/error.h"
 
@@ -23,34 +25,44 @@ std::string systemReason() {
 }  // namespace
 
 void writeOutputFile(const std::string& path, const std::string& what, const std::function<void(std::ostream&)>& body) {
+  // The whole file is formed in memory first (a path, an SRDF, a viewer page: megabytes at most),
+  // so a body that throws leaves nothing on disk. Binary: the bytes are the file's, with no
+  // line-ending translation on any platform.
+  std::ostringstream buffer(std::ios::binary);
+  body(buffer);
+  const std::string bytes = buffer.str();
+  // The temporary is created anew, never opened through what is there: a symbolic link planted at
+  // NAME.partial had the file written into its target (the problem's own mesh, in an adversarial
+  // review), and a stale file there is a run that was stopped mid-write. O_EXCL creates the file
+  // or fails, following no link; something put back in between is an error, not a target.
   const std::string temporary = path + ".partial";
-  {
-    // Binary: the bytes written are the file's (a viewer page's scripts, a path's lines), with no
-    // line-ending translation on any platform.
+  ::unlink(temporary.c_str());
+  errno = 0;
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) throw InputError(path + ": cannot write the " + what + systemReason());
+  const auto fail = [&](const std::string& message) {
+    const std::string reason = systemReason();
+    ::close(fd);
+    ::unlink(temporary.c_str());
+    throw InputError(path + ": " + message + reason);
+  };
+  for (std::size_t written = 0; written < bytes.size();) {
     errno = 0;
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw InputError(path + ": cannot write the " + what + systemReason());
-    try {
-      errno = 0;
-      body(out);
-    } catch (...) {
-      // Nothing half-written is left behind, whatever stopped the body.
-      out.close();
-      std::remove(temporary.c_str());
-      throw;
-    }
-    out.flush();
-    if (!out) {
-      const std::string reason = systemReason();
-      out.close();
-      std::remove(temporary.c_str());
-      throw InputError(path + ": writing the " + what + " failed" + reason);
-    }
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail("writing the " + what + " failed");
+    written += static_cast<std::size_t>(n);
+  }
+  errno = 0;
+  if (::close(fd) != 0) {
+    const std::string reason = systemReason();
+    ::unlink(temporary.c_str());
+    throw InputError(path + ": writing the " + what + " failed" + reason);
   }
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
   if (ec) {
-    std::remove(temporary.c_str());
+    ::unlink(temporary.c_str());
     throw InputError(path + ": cannot rename the finished " + what + " into place: " + ec.message());
   }
 }

@@ -82,6 +82,27 @@ def main():
         check(r.returncode == 2 and "--out: '/proc/self' is in /dev, /proc or /sys" in r.stderr,
               f"benchmark --out /proc/self: exit {r.returncode}, {r.stderr!r}")
 
+        # A link planted at NAME.partial, the temporary the file is written under, had the output
+        # written into its target (here the world mesh, an input --path refuses by name) and NAME
+        # left a link to it (an adversarial review). The temporary is created anew instead.
+        world_mesh = os.path.join(os.path.dirname(office), "office_env.obj")
+        world_before = pathlib.Path(world_mesh).read_bytes()
+        for command, option, extra in (("plan", "--path", ["--seed", "1", "--time", "1"]), ("view", "--html", [])):
+            target = os.path.join(work, f"planted.{command}")
+            os.symlink(world_mesh, target + ".partial")
+            r = run(adsd, [command, office] + extra + [option, target], work)
+            check(r.returncode == 0, f"{command} {option} beside a planted .partial link: exit {r.returncode}, "
+                  f"{r.stderr!r}")
+            if pathlib.Path(world_mesh).read_bytes() != world_before:
+                pathlib.Path(world_mesh).write_bytes(world_before)  # the build's mesh, for the tests after
+                check(False, f"{command} {option} wrote through the link at {target}.partial into the world mesh")
+            check(os.path.isfile(target) and not os.path.islink(target) and not os.path.lexists(target + ".partial"),
+                  f"{command} {option}: {target} is not a plain file, or the temporary is left")
+        # A name that fits alone but not with '.partial' added failed after the planning was done.
+        long_name = os.path.join(work, "n" * 250)
+        expect_refused(adsd, ["plan", office, "--seed", "1", "--time", "1", "--path", long_name], work,
+                       f"adsd plan: error: --path: '{long_name}': the name is 250 bytes long; with '.partial' added")
+
         # An output that is an input, or the other output, is refused: `view p.cfg --html p.cfg`
         # replaced the problem file with a page.
         before = pathlib.Path(office).read_bytes()
