@@ -1301,6 +1301,12 @@ TEST(LoadMeshBadInput, MalformedObjStlAndPlyNameTheLine) {
   // A C hexadecimal float is no OBJ number; it was called a missing coordinate (outside review).
   const std::string hex = loadError(dir.write("hex.obj", "v 0x1p0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   EXPECT_NE(hex.find("hex.obj:1: vertex 1: coordinate '0x1p0' is not a decimal number"), std::string::npos) << hex;
+  // Words after a vertex's coordinates were ignored: a lone CR in a file of LF line ends joined
+  // two vertex lines, and the second vertex vanished (an adversarial review).
+  const std::string joined = loadError(dir.write("joined.obj", "v 0 0 0\nv 1 0 0\rv 0 1 0\nv 0 0 1\nf 1 2 3\n"));
+  EXPECT_NE(joined.find("joined.obj:2: vertex 2: 'v' after its coordinates is not a number"), std::string::npos)
+      << joined;
+  EXPECT_EQ(loadMesh(dir.write("colour.obj", "v 0 0 0 1 0.5 0.5 1\nv 1 0 0 1\nv 0 1 0\nf 1 2 3\n")).triangleCount(), 1u);
   const std::string two = loadError(dir.write("two.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   EXPECT_NE(two.find("two.obj:1: vertex 1: expected 3 coordinates after 'v', got 2"), std::string::npos) << two;
   const std::string range = loadError(dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 9\n"));

@@ -7,7 +7,7 @@
 // says nothing but "false" on a bad file. Here every number goes through std::from_chars, which
 // rounds correctly, and a bad line is reported with its number.
 //
-// What is read: "v x y z" (values after the third, such as w or a colour, ignored) and "f" with
+// What is read: "v x y z" (up to four numbers after the third, w or a colour, ignored) and "f" with
 // corners written i, i/t, i/t/n or i//n (t and n not used, but each a whole number or empty),
 // indices from 1, negative ones counting back from the last vertex read. "l" (lines) and "p"
 // (points) are counted, not surfaces; every other statement (vt, vn, o, g, s, usemtl, mtllib, ...)
@@ -109,6 +109,21 @@ class ObjReader {
       if (!parseDouble(word, p(axis))) {
         throw InputError(at() + "vertex " + std::to_string(v + 1) + ": coordinate " + quoteToken(word) +
                          " is not a decimal number");
+      }
+    }
+    // After x y z a file may give w, or a colour (r g b, some exporters r g b a): numbers, read
+    // and not used. Anything else is a mistake: a lone carriage return in a file of LF line ends
+    // joined two vertex lines into one, and the second vertex was dropped without a word (the
+    // faces after it then named the wrong corners; an adversarial review).
+    if (tokens.size() > 8) {
+      throw InputError(at() + "vertex " + std::to_string(v + 1) + ": expected 3 coordinates after 'v' (then w or a " +
+                       "colour), got " + std::to_string(tokens.size() - 1) + " values");
+    }
+    for (std::size_t k = 4; k < tokens.size(); ++k) {
+      double ignored = 0.0;
+      if (!parseDouble(tokens[k], ignored)) {
+        throw InputError(at() + "vertex " + std::to_string(v + 1) + ": " + quoteToken(tokens[k]) +
+                         " after its coordinates is not a number (w or a colour)");
       }
     }
     for (int axis = 0; axis < 3; ++axis) {
