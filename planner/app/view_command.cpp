@@ -97,6 +97,10 @@ std::optional<ViewArguments> parseArguments(const std::vector<std::string>& args
 /// A line of millions of numbers was kept whole before its count was checked (a 200 MB line took
 /// 2.3 GB).
 constexpr std::size_t kMaxPathLineBytes = std::size_t{1} << 20;
+/// The most states a path file may hold: each is a clearance query and about 240 bytes of the
+/// page, and 300 000 took 42 s and a 73 MB page (an adversarial review); a planned path, even
+/// interpolated at the validity-checking resolution, has far fewer.
+constexpr std::size_t kMaxPathStates = 100000;
 
 /// Calls \p onComment for each comment line of a path file (its text after '#') and \p onState
 /// for each state line (its numbers), each with "FILE:LINE: " to put before an error; blank lines
@@ -135,6 +139,10 @@ void readPathLines(const std::string& file,
       const std::optional<double> v = cli::toReal(word);
       if (!v) throw InputError(where + "'" + word + "' is not a finite number");
       values.push_back(*v);
+    }
+    if (states == kMaxPathStates) {
+      throw InputError(where + "more than " + std::to_string(kMaxPathStates) +
+                       " states (each is a clearance query and a frame of the page)");
     }
     onState(values, where);
     ++states;
