@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <tinyxml.h>
+
 #include "adsd/cli/command_line.h"
 #include "adsd/error.h"
 #include "adsd/planner/arm_collision_pairs.h"
@@ -87,6 +89,18 @@ void requireReplaceable(const std::string& out) {
     }
     throw cli::UsageError("--out: '" + out + "' exists and is a URDF (it has <" + element + "> elements), not an " +
                           "SRDF: not replaced");
+  }
+  // A URDF of bare links has none of those (an adversarial review replaced one); its links are
+  // children of <robot>, where an SRDF's stand inside a <group>.
+  TiXmlDocument document;
+  if (document.LoadFile(out.c_str()) && document.RootElement() != nullptr &&
+      std::string(document.RootElement()->Value()) == "robot") {
+    for (const char* element : {"link", "joint"}) {
+      if (document.RootElement()->FirstChildElement(element) != nullptr) {
+        throw cli::UsageError("--out: '" + out + "' exists and is a URDF (its <robot> has <" + element +
+                              "> elements of its own), not an SRDF: not replaced");
+      }
+    }
   }
 }
 

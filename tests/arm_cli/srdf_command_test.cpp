@@ -186,6 +186,15 @@ TEST(SrdfCommand, BadInputWritesNothing) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("exists and is a URDF"), std::string::npos) << r.err;
   EXPECT_EQ(readAll(other), before);
+  // Nor a URDF of bare links, with no <parent>, <child>, <visual>, <collision> or <inertial> to tell
+  // it by (an adversarial review replaced one): its <link> stands directly in <robot>.
+  const std::string bare = "<?xml version=\"1.0\"?>\n<robot name=\"x\">\n<link name=\"world\"/>\n</robot>\n";
+  std::ofstream(dir / "bare.urdf") << bare;
+  r = runAdsd("srdf", {urdf.string(), "--out", (dir / "bare.urdf").string()}, dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("exists and is a URDF (its <robot> has <link> elements of its own)"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(readAll(dir / "bare.urdf"), bare);
   // An SRDF MoveIt's assistant wrote, groups naming links and joints, is replaced.
   std::ofstream(dir / "moveit.srdf") << "<?xml version=\"1.0\"?>\n<robot name=\"judged\">\n"
                                         "  <group name=\"arm\"><joint name=\"slide\"/><link name=\"slider\"/></group>\n"
