@@ -839,6 +839,30 @@ Mesh gridSquare(const Vec3& origin, const Vec3& u, const Vec3& v, double side, i
   return Mesh(std::move(vertices), std::move(triangles), name);
 }
 
+// Two fine flat sheets overlapping in one plane (a part lying on a table, both meshed as
+// surfaces): every pair of their overlapping boxes has a lower bound of 0, and best first took
+// those ties by their estimate alone, across the whole sheet, before a first pair of leaves could
+// show the distance 0 (an outside review: 53 443 node pairs, 16 ms, for sheets of 80 000 and
+// 65 000 triangles, against FCL's 0.4 ms). Among pairs whose boxes overlap the deeper goes first,
+// so the query reaches leaves at once; on real meshes this changed the node pairs of exact queries
+// near contact by at most 3 % (bench_bands --counters, touching to mid range).
+TEST(MeshDistance, OverlappingSheetsInOnePlaneReachTheirLeavesAtOnce) {
+  const Vec3 x(1, 0, 0), y(0, 1, 0);
+  Mesh a = gridSquare(Vec3(0, 0, 0), x, y, 1.0, 100, "sheet a");
+  Mesh b = gridSquare(Vec3(0, 0, 0), x, y, 1.0, 90, "sheet b");
+  a.buildHierarchy();
+  b.buildHierarchy();
+  for (const Vec3& shift : {Vec3(0.003, 0.0021, 0), Vec3(0.25, -0.4, 0), Vec3(-0.5, 0.5, 0)}) {
+    const DistanceResult r =
+        distance(a, Pose::Identity(), b, Pose(Eigen::Translation3d(shift)), DistanceOptions::exactDistance());
+    EXPECT_EQ(r.status, DistanceStatus::exact);
+    EXPECT_EQ(r.distance, 0.0);
+    EXPECT_LT(r.counters.subMeshPairs, 500u) << "shift " << shift.transpose();
+    std::printf("[overlapping sheets] shift (%g, %g): %llu node pairs\n", shift.x(), shift.y(),
+                static_cast<unsigned long long>(r.counters.subMeshPairs));
+  }
+}
+
 // A finely meshed block resting flat above a finely meshed plate: every triangle of its bottom is
 // at the same distance from the plate, so the bounds of those pairs tie with the best distance
 // found up to a few ulps, and before tolerance::kTieSlack an exact query opened them (an outside
