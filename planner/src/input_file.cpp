@@ -4,10 +4,27 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "adsd/error.h"
 
 namespace adsd::planner {
+
+void requireNarrowText(const std::string& text, const std::string& sourceName) {
+  if (text.find('\0') == std::string::npos) return;
+  const auto startsWith = [&](std::string_view mark) { return std::string_view(text).substr(0, mark.size()) == mark; };
+  // UTF-32LE's mark begins with UTF-16LE's, so it is asked first.
+  const char* encoding = startsWith(std::string_view("\xFF\xFE\0\0", 4))   ? "UTF-32LE"
+                         : startsWith(std::string_view("\0\0\xFE\xFF", 4)) ? "UTF-32BE"
+                         : startsWith("\xFF\xFE")                         ? "UTF-16LE"
+                         : startsWith("\xFE\xFF")                         ? "UTF-16BE"
+                                                                          : nullptr;
+  if (encoding != nullptr) {
+    throw InputError(sourceName + ": the file is " + encoding + " text; save it as UTF-8 (iconv -f " + encoding +
+                     " -t UTF-8)");
+  }
+  throw InputError(sourceName + ": not a text file (contains a NUL byte)");
+}
 
 void dropByteOrderMark(std::string& text) {
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);

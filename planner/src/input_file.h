@@ -15,6 +15,11 @@ std::string readInputFile(const std::string& path, const std::string& what);
 /// it is no part of the first line.
 void dropByteOrderMark(std::string& text);
 
+/// \brief Throws InputError "SOURCE: not a text file ..." when \p text holds a NUL byte, naming
+/// the encoding when a byte-order mark shows a wide one (UTF-16 or UTF-32, as Windows Notepad may
+/// save): "contains a NUL byte" alone left the user to guess.
+void requireNarrowText(const std::string& text, const std::string& sourceName);
+
 /// \brief Makes the line ends of a file of classic Mac OS text (CR alone, and no LF anywhere) LF,
 /// as the mesh readers take them (adsd/io/src/text_scan.h); elsewhere a CR stays what it is.
 void takeLoneCarriageReturnsAsLineEnds(std::string& text);

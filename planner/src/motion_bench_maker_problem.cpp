@@ -116,7 +116,7 @@ std::string expandPathVariables(const std::string& value, const SourceLocation& 
 
 MotionBenchMakerProblem parseMotionBenchMakerProblem(const std::string& text, const std::string& sourceName,
                                                      const std::string& directory) {
-  if (text.find('\0') != std::string::npos) throw InputError(sourceName + ": not a text file (contains a NUL byte)");
+  requireNarrowText(text, sourceName);
   MotionBenchMakerProblem problem;
   problem.path = sourceName;
   problem.directory = directory;

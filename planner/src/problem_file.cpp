@@ -690,7 +690,7 @@ ProblemFile parseProblemFile(std::istream& in, const std::string& sourceName, co
   std::string text = buffer.str();
   if (in.bad()) throw InputError(sourceName + ": cannot read the file");
   dropByteOrderMark(text);
-  if (text.find('\0') != std::string::npos) throw InputError(sourceName + ": not a text file (contains a NUL byte)");
+  requireNarrowText(text, sourceName);
   // For this pass and Boost's alike; elsewhere a CR is a control character.
   takeLoneCarriageReturnsAsLineEnds(text);
 

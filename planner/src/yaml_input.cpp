@@ -14,6 +14,7 @@
 
 #include "adsd/error.h"
 #include "decimal_number.h"
+#include "input_file.h"
 
 namespace adsd::planner::yaml {
 
@@ -141,7 +142,7 @@ std::string quoted(const std::string& text) {
 
 Document::Document(const std::string& text, std::string source)
     : source_(std::move(source)), budget_(kBudgetPerByte * text.size() + kBudgetSlack) {
-  if (text.find('\0') != std::string::npos) throw InputError(source_ + ": not a text file (contains a NUL byte)");
+  requireNarrowText(text, source_);
   // yaml-cpp's errors as ours, at their line (a mark of -1: the parser did not know the place).
   const auto refuse = [this](const YAML::Exception& e) {
     const std::string line = e.mark.line >= 0 ? ":" + std::to_string(e.mark.line + 1) : "";

@@ -77,6 +77,18 @@ TEST(PoseFile, Utf8ByteOrderMarkBeforeTheFirstLineIsSkipped) {
   EXPECT_EQ(poses[0].line, 1);
 }
 
+// A UTF-16 file (Windows Notepad may save one) had its first number quoted as '??0?'.
+TEST(PoseFile, WideTextIsRefusedNamingItsEncoding) {
+  std::string utf16 = "\xFF\xFE";
+  for (const char c : std::string(kIdentityPair) + "\n") utf16 += std::string{c, '\0'};
+  try {
+    read(utf16);
+    ADD_FAILURE() << "no error for a UTF-16 pose file";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "poses.txt: the file is UTF-16LE text; save it as UTF-8 (iconv -f UTF-16LE -t UTF-8)");
+  }
+}
+
 TEST(PoseFile, EmptyInputHasNoPoses) { EXPECT_TRUE(read("# nothing\n\n").empty()); }
 
 TEST(PoseFile, QuaternionWithinToleranceIsNormalized) {

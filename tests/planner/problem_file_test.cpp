@@ -249,6 +249,10 @@ TEST(ProblemFileErrors, KinodynamicProblemsAreRejected) {
 
 TEST(ProblemFileErrors, BinaryGarbage) {
   EXPECT_EQ(errorOf(std::string("[problem]\n\0\x01\x02", 13)), ": not a text file (contains a NUL byte)");
+  // UTF-16 (Windows Notepad may save one) is named, with the way to convert it.
+  std::string utf16 = "\xFE\xFF";
+  for (const char c : std::string(kSe3Start)) utf16 += std::string{'\0', c};
+  EXPECT_EQ(errorOf(utf16), ": the file is UTF-16BE text; save it as UTF-8 (iconv -f UTF-16BE -t UTF-8)");
 }
 
 TEST(ProblemFileErrors, NumbersMustBeDecimal) {

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "adsd/error.h"
+#include "file_checks.h"
 #include "text_scan.h"
 
 namespace adsd::io {
@@ -92,6 +93,13 @@ std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceNa
     std::string_view content(line);
     if (lineNumber == 1 && content.substr(0, detail::kUtf8ByteOrderMark.size()) == detail::kUtf8ByteOrderMark) {
       content.remove_prefix(detail::kUtf8ByteOrderMark.size());
+    }
+    // A wide encoding's mark (Windows Notepad may save UTF-16): its first number was quoted as
+    // '??0?', not a number, leaving the user to guess why.
+    if (const std::string encoding = lineNumber == 1 ? detail::wideTextEncoding(content) : std::string();
+        !encoding.empty()) {
+      throw InputError(sourceName + ": the file is " + encoding + " text; save it as UTF-8 (iconv -f " + encoding +
+                       " -t UTF-8)");
     }
     if (const std::size_t hash = content.find('#'); hash != std::string_view::npos) content = content.substr(0, hash);
     const std::vector<std::string_view> tokens = detail::splitWhitespace(content);
