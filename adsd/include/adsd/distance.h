@@ -42,11 +42,11 @@ enum class QueryMode {
 
 struct DistanceOptions {
   QueryMode mode = QueryMode::exact;
-  /// tolerance mode: absolute slack, in length units of the scene (>= 0).
+  /// tolerance mode: absolute slack, in length units of the scene (finite, >= 0).
   double absTolerance = 0.0;
-  /// tolerance mode: slack relative to the returned upper bound (>= 0, dimensionless).
+  /// tolerance mode: slack relative to the returned upper bound (finite, >= 0, dimensionless).
   double relTolerance = 0.0;
-  /// threshold mode: the safety margin D (>= 0, length units).
+  /// threshold mode: the safety margin D (finite, >= 0, length units).
   double threshold = 0.0;
   /// cap mode: distances at or beyond this are reported only as ">= cap" (> 0, length units).
   double cap = std::numeric_limits<double>::infinity();
