@@ -116,6 +116,9 @@ TEST(PoseFileBadInput, NonUnitQuaternionNamesTheMesh) {
   EXPECT_NE(a.find("quaternion of mesh A has norm 0"), std::string::npos) << a;
   // Just beyond the tolerance of 1e-6.
   readError("0 0 0 1.000002 0 0 0  0 0 0 1 0 0 0\n", 1);
+  // Components whose squares overflow: the norm is said as it is, not "inf".
+  const std::string huge = readError("0 0 0 1e300 1e300 0 0  0 0 0 1 0 0 0\n", 1);
+  EXPECT_NE(huge.find("quaternion of mesh A has norm 1.41421356237e+300"), std::string::npos) << huge;
 }
 
 TEST(PoseFileBadInput, NanAndInfinityNameTheField) {

@@ -37,7 +37,10 @@ std::string formatNorm(double norm) {
 
 Pose poseFrom(const double* numbers, const std::string& where, const char* meshLabel) {
   const Eigen::Quaterniond q(numbers[3], numbers[4], numbers[5], numbers[6]);
-  const double norm = q.norm();
+  // Scaled by the largest component: the sum of squares of components near 1e300 overflowed, and
+  // the message said "norm inf" (an adversarial review).
+  const double largest = q.coeffs().cwiseAbs().maxCoeff();
+  const double norm = largest > 0.0 && std::isfinite(largest) ? largest * (q.coeffs() / largest).norm() : q.norm();
   if (!(std::abs(norm - 1.0) <= kQuaternionNormTolerance)) {
     throw InputError(where + "quaternion of mesh " + meshLabel + " has norm " + formatNorm(norm) +
                      ", not 1 within " + formatNorm(kQuaternionNormTolerance));
