@@ -1205,8 +1205,11 @@ TEST(LoadMeshBadInput, MalformedOff) {
   EXPECT_NE(range.find("range.off:6: face 0 refers to vertex 7 but the file has 3 vertices"), std::string::npos)
       << range;
   const std::string missing = loadError(dir.write("few.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
-  // The face line is read as the fourth vertex (extra values after x y z are allowed); then the face is missing.
-  EXPECT_NE(missing.find("few.off: the OFF header promises 1 face but the file ends after 0"), std::string::npos)
+  // The face line is read as the fourth vertex (extra values after x y z are allowed); then the face is
+  // missing, and the message points at the vertex count.
+  EXPECT_NE(missing.find("few.off: the OFF header promises 1 face but the file ends after 0 (is the header's vertex "
+                         "count, 4, more than the file holds?"),
+            std::string::npos)
       << missing;
   const std::string word = loadError(dir.write("word.off", "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_NE(word.find("word.off:4: vertex 1: expected 3 coordinates"), std::string::npos) << word;

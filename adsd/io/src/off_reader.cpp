@@ -96,7 +96,13 @@ class OffReader {
     soup.corners.reserve(3 * facesThatFit);
     soup.starts.reserve(facesThatFit + 1);
     for (long long f = 0; f < faces; ++f) {
-      const std::vector<std::string_view> tokens = nextDataLine("face", "faces", f, faces);
+      // A vertex count too high reads the first faces as vertices (a line of numbers either way),
+      // and then the faces seem missing: said, where "ends after 0 faces" alone pointed away from
+      // the count at fault (an adversarial review).
+      const std::string hint = f == 0 ? " (is the header's vertex count, " + std::to_string(vertices) +
+                                            ", more than the file holds? Face lines were then read as vertices)"
+                                      : std::string();
+      const std::vector<std::string_view> tokens = nextDataLine("face", "faces", f, faces, hint);
       long long corners = 0;
       if (!parseInteger(tokens[0], corners) || corners < 1) {
         throw InputError(at() + "face " + std::to_string(f) + ": expected a corner count of at least 1, got " +
@@ -209,12 +215,14 @@ class OffReader {
     }
   }
 
-  /// The next line with data: blank lines and comments are skipped.
-  std::vector<std::string_view> nextDataLine(const char* one, const char* many, long long index, long long promised) {
+  /// The next line with data: blank lines and comments are skipped. A file that ends first is an
+  /// error, with \p atTheEnd added to its message.
+  std::vector<std::string_view> nextDataLine(const char* one, const char* many, long long index, long long promised,
+                                             const std::string& atTheEnd = std::string()) {
     while (true) {
       if (!lines_.next(current_)) {
         throw InputError(path_ + ": the OFF header promises " + std::to_string(promised) + " " +
-                         (promised == 1 ? one : many) + " but the file ends after " + std::to_string(index));
+                         (promised == 1 ? one : many) + " but the file ends after " + std::to_string(index) + atTheEnd);
       }
       if (withoutComment(current_).size() > kMaxWordLineBytes) {
         throw InputError(at() + "line longer than " + std::to_string(kMaxWordLineBytes) +
