@@ -157,6 +157,64 @@ std::optional<std::string> switchValue(std::string value) {
   return std::nullopt;
 }
 
+/// Checks AnytimePathShortening's `planners` list before OMPL reads it: entries NAME or
+/// NAME[PARAMETER=VALUE ...] separated by commas, each NAME a planner OMPL's list knows (its class
+/// names: RRTConnect, PRM). OMPL 1.5.2 drops a name it does not know with an error in its log
+/// alone (`planners = rrt,prm` ran its default planners, without a word), sets the parameters of
+/// an unknown entry on the entry before it, and with none before it (`Foo[range=1]`, or ` PRM`,
+/// which it reads as a nameless entry) dereferences a null planner.
+void requireShorteningPlanners(const Setting& list, const std::string& name,
+                               const ompl::base::SpaceInformationPtr& si) {
+  std::vector<std::string> entries;
+  int depth = 0;
+  std::string entry;
+  for (const char c : list.value + ",") {
+    depth += c == '[' ? 1 : c == ']' ? -1 : 0;
+    if (c == ',' && depth == 0) {
+      entries.push_back(entry);
+      entry.clear();
+    } else {
+      entry += c;
+    }
+  }
+  if (list.value.empty()) return;  // no list: the planner's defaults
+  ompl::geometric::AnytimePathShortening probe(si);
+  for (const std::string& e : entries) {
+    const std::size_t open = e.find('[');
+    const std::string planner = e.substr(0, open);
+    const bool formed = !planner.empty() && std::all_of(planner.begin(), planner.end(), [](unsigned char c) {
+      return std::isalnum(c) != 0 || c == '_';
+    }) && (open == std::string::npos || (e.back() == ']' && e.find_first_of("[]", open + 1) == e.size() - 1));
+    if (!formed) {
+      throw InputError(list.location.describe() + ": " + name + ": expected planners as NAME or " +
+                       "NAME[PARAMETER=VALUE ...] separated by commas, without spaces around them, got '" + e + "'");
+    }
+    // The name alone: OMPL reads it without a parameter to set on a missing planner.
+    const ompl::msg::LogLevel level = ompl::msg::getLogLevel();
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    bool known = false;
+    try {
+      known = probe.params().setParam("planners", planner) && probe.getNumPlanners() == 1;
+    } catch (const std::exception&) {
+      known = false;
+    }
+    ompl::msg::setLogLevel(level);
+    if (!known) {
+      throw InputError(list.location.describe() + ": " + name + " knows no planner '" + planner +
+                       "' (it takes OMPL's class names, such as RRT, RRTConnect, PRM, RRTstar)");
+    }
+    // RRTstar[ordered_sampling=1] crashes as configurePlanner below says, inside the list too.
+    const auto on = [&](const std::string& key) {
+      return e.find(key + "=1") != std::string::npos || e.find(key + "=true") != std::string::npos;
+    };
+    if (on("ordered_sampling") && !on("informed_sampling") && !on("sample_rejection")) {
+      throw InputError(list.location.describe() + ": " + name + ": '" + e + "': ordered_sampling orders the samples " +
+                       "of informed or rejection sampling, and neither is on (set informed_sampling=1 or " +
+                       "sample_rejection=1)");
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> configurePlanner(ompl::base::Planner& planner, const std::string& name,
@@ -164,6 +222,11 @@ std::vector<std::string> configurePlanner(ompl::base::Planner& planner, const st
   std::vector<const Setting*> order;
   for (const Setting& s : settings) order.push_back(&s);
   std::stable_partition(order.begin(), order.end(), [](const Setting* s) { return s->key != "ordered_sampling"; });
+  if (dynamic_cast<const ompl::geometric::AnytimePathShortening*>(&planner) != nullptr) {
+    for (const Setting* s : order) {
+      if (s->key == "planners") requireShorteningPlanners(*s, name, planner.getSpaceInformation());
+    }
+  }
   std::vector<std::string> warnings;
   ompl::base::ParamSet& params = planner.params();
   for (const Setting* s : order) {
@@ -199,8 +262,9 @@ std::vector<std::string> configurePlanner(ompl::base::Planner& planner, const st
       !rrtStar->getSampleRejection()) {
     auto line = std::find_if(order.begin(), order.end(), [](const Setting* s) { return s->key == "ordered_sampling"; });
     if (line == order.end()) {
-      line = std::find_if(order.begin(), order.end(),
-                          [](const Setting* s) { return s->key == "informed_sampling" || s->key == "sample_rejection"; });
+      line = std::find_if(order.begin(), order.end(), [](const Setting* s) {
+        return s->key == "informed_sampling" || s->key == "sample_rejection";
+      });
     }
     throw InputError((line != order.end() ? (*line)->location.describe() + ": " : std::string()) + name +
                      ": ordered_sampling orders the samples of informed or rejection sampling, and neither is on "

@@ -396,12 +396,12 @@ TEST(ProblemFile, PlannerParametersOmplReadsAlikeAreKept) {
       "ok.cfg", std::string(kSe3Start) + "longest_valid_segment_fraction = 5e-3\nvalid_segment_count_factor = +2\n"
                                          "[planner]\nrrtstar =\nrrtstar.range = .5\nrrtstar.delay_collision_checking = "
                                          "False\nrrtstar.rewire_factor = 1.2E0\nprm =\nprm.max_nearest_neighbors = "
-                                         "007\nanytimepathshortening =\nanytimepathshortening.planners = rrt,prm\n"
+                                         "007\nanytimepathshortening =\nanytimepathshortening.planners = RRT,PRM\n"
                                          "rrtstar.no_such_parameter = whatever\n"));
   ASSERT_EQ(p.spaceParameters.size(), 2u);
   ASSERT_EQ(p.planners.size(), 3u);
   EXPECT_EQ(p.planners[0].parameters.size(), 4u);  // an unknown name is the planner's to ignore
-  EXPECT_EQ(p.planners[2].parameters[0].value, "rrt,prm");
+  EXPECT_EQ(p.planners[2].parameters[0].value, "RRT,PRM");
 }
 
 TEST(ProblemFileErrors, TimeLimitsBeyondTheClock) {

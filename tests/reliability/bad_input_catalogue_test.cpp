@@ -200,5 +200,26 @@ TEST(BadInputCatalogue, OrderedSamplingWithoutInformedOrRejectionSamplingNamesTh
   EXPECT_EQ(configureError("informedrrtstar", "informedrrtstar.ordered_sampling = 1\n"), "");
 }
 
+// AnytimePathShortening's list of planners, read by OMPL 1.5.2 alone: an unknown name was
+// dropped with a line in OMPL's log (`rrt,prm` ran its default planners instead), and an unknown
+// or nameless entry with parameters and no planner before it (`Foo[range=1]`, ` PRM`) crashed it
+// (an adversarial review, then our own sweep).
+TEST(BadInputCatalogue, UnknownOrMalformedPlannersOfAnytimePathShorteningNameTheKey) {
+  const std::string key = ":16: key 'planner.anytimepathshortening.planners': anytimepathshortening";
+  EXPECT_EQ(configureError("anytimepathshortening", "anytimepathshortening.planners = rrt,prm\n"),
+            key + " knows no planner 'rrt' (it takes OMPL's class names, such as RRT, RRTConnect, PRM, RRTstar)");
+  EXPECT_EQ(configureError("anytimepathshortening", "anytimepathshortening.planners = Foo[range=1]\n"),
+            key + " knows no planner 'Foo' (it takes OMPL's class names, such as RRT, RRTConnect, PRM, RRTstar)");
+  EXPECT_EQ(configureError("anytimepathshortening", "anytimepathshortening.planners = RRT, PRM\n"),
+            key + ": expected planners as NAME or NAME[PARAMETER=VALUE ...] separated by commas, without spaces "
+                  "around them, got ' PRM'");
+  EXPECT_EQ(configureError("anytimepathshortening", "anytimepathshortening.planners = RRTstar[ordered_sampling=1]\n"),
+            key + ": 'RRTstar[ordered_sampling=1]': ordered_sampling orders the samples of informed or rejection "
+                  "sampling, and neither is on (set informed_sampling=1 or sample_rejection=1)");
+  EXPECT_EQ(configureError("anytimepathshortening",
+                           "anytimepathshortening.planners = RRTConnect,PRM[max_nearest_neighbors=5]\n"),
+            "");
+}
+
 }  // namespace
 }  // namespace adsd::planner
