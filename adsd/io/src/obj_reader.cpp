@@ -11,7 +11,7 @@
 // corners written i, i/t, i/t/n or i//n (t and n not used, but each a whole number or empty),
 // indices from 1, negative ones counting back from the last vertex read. "l" (lines) and "p"
 // (points) are counted, not surfaces; every other statement (vt, vn, o, g, s, usemtl, mtllib, ...)
-// is ignored, as are comments from '#'. A line ending in '\\' continues on the next, as the
+// is ignored, as are comments from '#'. A line ending in a backslash continues on the next, as the
 // format allows (exporters wrap long faces so); errors name the line the statement starts on. An
 // index may refer to a vertex defined later in the file; one beyond the last vertex is an error
 // naming its line.
@@ -44,7 +44,7 @@ class ObjReader {
 
   PolygonSoup run() {
     std::string_view line;
-    std::string continued;  // a statement's lines so far, while each ends in '\\'
+    std::string continued;  // a statement's lines so far, while each ends in a backslash
     while (lines_.next(line)) {
       if (continued.empty()) statementLine_ = lines_.lineNumber();
       const std::size_t hash = line.find('#');
@@ -59,7 +59,7 @@ class ObjReader {
       readStatement(line);
       continued.clear();
     }
-    if (!continued.empty()) readStatement(continued);  // the file's last line ends in '\\'
+    if (!continued.empty()) readStatement(continued);  // the file's last line ends in a backslash
     if (maxIndex_ >= static_cast<long long>(soup_.points.size())) {
       throw InputError(path_ + ":" + std::to_string(maxIndexLine_) + ": face refers to vertex " +
                        std::to_string(maxIndex_ + 1) + " but the file has " + std::to_string(soup_.points.size()) +
