@@ -80,9 +80,9 @@ std::optional<std::string> Arguments::outputFile(const std::string& name) const 
   const std::size_t longest = nameMax > 0 ? static_cast<std::size_t>(nameMax) : 255;
   const std::size_t nameBytes = std::filesystem::path(*file).filename().string().size();
   if (nameBytes + std::string_view(".partial").size() > longest) {
-    throw UsageError(option + "'" + *file + "': the name is " + std::to_string(nameBytes) + " bytes long; with '.partial' " +
-                     "added for the temporary it is written under, it must fit " + std::to_string(longest) +
-                     " bytes");
+    throw UsageError(option + "'" + *file + "': the name is " + std::to_string(nameBytes) +
+                     " bytes long; with '.partial' added for the temporary it is written under, it must fit " +
+                     std::to_string(longest) + " bytes");
   }
   if (::access(directory.c_str(), W_OK) != 0) {
     throw UsageError(option + "'" + *file + "': directory '" + directory.string() + "' is not writable");

@@ -1309,7 +1309,8 @@ TEST(LoadMeshBadInput, MalformedObjStlAndPlyNameTheLine) {
   const std::string joined = loadError(dir.write("joined.obj", "v 0 0 0\nv 1 0 0\rv 0 1 0\nv 0 0 1\nf 1 2 3\n"));
   EXPECT_NE(joined.find("joined.obj:2: vertex 2: 'v' after its coordinates is not a number"), std::string::npos)
       << joined;
-  EXPECT_EQ(loadMesh(dir.write("colour.obj", "v 0 0 0 1 0.5 0.5 1\nv 1 0 0 1\nv 0 1 0\nf 1 2 3\n")).triangleCount(), 1u);
+  const Mesh coloured = loadMesh(dir.write("colour.obj", "v 0 0 0 1 0.5 0.5 1\nv 1 0 0 1\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_EQ(coloured.triangleCount(), 1u);
   const std::string two = loadError(dir.write("two.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
   EXPECT_NE(two.find("two.obj:1: vertex 1: expected 3 coordinates after 'v', got 2"), std::string::npos) << two;
   const std::string range = loadError(dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 9\n"));

@@ -85,7 +85,8 @@ TEST(PoseFile, WideTextIsRefusedNamingItsEncoding) {
     read(utf16);
     ADD_FAILURE() << "no error for a UTF-16 pose file";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "poses.txt: the file is UTF-16LE text; save it as UTF-8 (iconv -f UTF-16LE -t UTF-8)");
+    EXPECT_EQ(std::string(e.what()),
+              "poses.txt: the file is UTF-16LE text; save it as UTF-8 (iconv -f UTF-16LE -t UTF-8)");
   }
 }
 
