@@ -60,13 +60,14 @@ void appendBits(std::vector<std::uint8_t>& bytes, Real x) {
   appendLittleEndian(bytes, bits);
 }
 
-/// The meshes of \p parts as one, for drawing: float32 positions and uint32 indices, base64.
-std::string meshJson(const std::vector<const Mesh*>& parts) {
+/// The meshes of \p parts as one, for drawing: float32 positions measured from \p origin and
+/// uint32 indices, base64.
+std::string meshJson(const std::vector<const Mesh*>& parts, const Vec3& origin = Vec3::Zero()) {
   std::vector<std::uint8_t> positions, indices;
   std::uint32_t offset = 0;
   for (const Mesh* m : parts) {
     for (const Vec3& v : m->vertices()) {
-      for (int k = 0; k < 3; ++k) appendBits<std::uint32_t>(positions, static_cast<float>(v[k]));
+      for (int k = 0; k < 3; ++k) appendBits<std::uint32_t>(positions, static_cast<float>(v[k] - origin[k]));
     }
     for (const TriangleIndices& t : m->triangles()) {
       for (const std::uint32_t i : t) appendLittleEndian(indices, offset + i);
@@ -160,8 +161,18 @@ std::string pageJson(const ViewerPage& page) {
                     ",\"source\":" + jsonString(page.source) + ",\"up\":";
   appendArray(out, {page.up.x(), page.up.y(), page.up.z()});
   std::vector<const Mesh*> environment;
-  for (const Mesh& m : *page.environment) environment.push_back(&m);
-  out += ",\"environment\":" + meshJson(environment) + ",\"bodies\":[";
+  Eigen::AlignedBox3d bounds;
+  for (const Mesh& m : *page.environment) {
+    environment.push_back(&m);
+    for (const Vec3& v : m.vertices()) bounds.extend(v);
+  }
+  // The environment's float32 positions are measured from the centre of its box, which the page
+  // keeps in float64: in world coordinates, a scene 1.2e6 from the origin had its 1 cm wall drawn
+  // 12.5 cm thick, and one 1e12 away collapsed to a point (an adversarial review).
+  const Vec3 origin = bounds.isEmpty() ? Vec3::Zero() : Vec3(bounds.center());
+  out += ",\"origin\":";
+  appendArray(out, {origin.x(), origin.y(), origin.z()});
+  out += ",\"environment\":" + meshJson(environment, origin) + ",\"bodies\":[";
   for (std::size_t b = 0; b < bodies; ++b) {
     out += (b > 0 ? ",{\"name\":" : "{\"name\":") + jsonString(page.bodies[b].name) +
            ",\"mesh\":" + meshJson(page.bodies[b].parts) + "}";

@@ -9,7 +9,7 @@ import path from 'node:path';
 import { after, before, test } from 'node:test';
 
 import {
-  armRobotFile, checkArmViewer, checkViewer, launchBrowser, outDir, printedMinClearance, problemsDir, run,
+  armRobotFile, checkArmViewer, checkViewer, launchBrowser, openViewer, outDir, printedMinClearance, problemsDir, run,
 } from './viewer_page.mjs';
 
 let browser;
@@ -51,6 +51,43 @@ test('twisted_passage (SE(3)): adsd view of the path file adsd plan wrote', asyn
   assert.equal(printedMinClearance(view.stdout), printedMinClearance(plan.stdout));
   await checkViewer(browser, {
     html, cfg, expectedMin: printedMinClearance(plan.stdout), screenshot: out('viewer_twisted_passage.png') });
+});
+
+// A wall with a 2 cm gap, 1 cm thick, 1.2e6 from the origin: the page sent the environment as
+// float32 in world coordinates, and the wall was drawn 12.5 cm thick with its gap closed (an
+// adversarial review). Each vertex as drawn is now within a micrometre of the file's.
+test('a scene far from the origin is drawn where it is', async () => {
+  const offset = 1234567.891, s = 0.01;
+  const box = (lo, hi) => [0, 1].flatMap((i) => [0, 1].flatMap((j) => [0, 1].map((k) =>
+    [i ? hi[0] : lo[0], j ? hi[1] : lo[1], k ? hi[2] : lo[2]])));
+  const faces = [[1, 3, 7], [1, 7, 5], [2, 6, 8], [2, 8, 4], [1, 5, 6], [1, 6, 2], [3, 4, 8], [3, 8, 7], [1, 2, 4],
+    [1, 4, 3], [5, 7, 8], [5, 8, 6]];
+  const obj = (boxes) => boxes.map((b, n) => b.map((v) => `v ${v.join(' ')}`).join('\n') + '\n' +
+    faces.map((f) => `f ${f.map((i) => i + 8 * n).join(' ')}`).join('\n')).join('\n') + '\n';
+  const walls = [box([offset + 4 * s, offset - 10 * s, -s], [offset + 5 * s, offset - s, s]),
+    box([offset + 4 * s, offset + s, -s], [offset + 5 * s, offset + 10 * s, s])];
+  fs.writeFileSync(out('far_env.obj'), obj(walls));
+  fs.writeFileSync(out('far_robot.obj'), obj([box([-s / 2, -s / 2, -s / 2], [s / 2, s / 2, s / 2])]));
+  fs.writeFileSync(out('far.cfg'), ['[problem]', 'name = far', 'robot = far_robot.obj', 'world = far_env.obj',
+    `start.x = ${offset}`, `start.y = ${offset}`, 'start.theta = 0', `goal.x = ${offset + 9 * s}`,
+    `goal.y = ${offset}`, 'goal.theta = 0', `volume.min.x = ${offset - 2 * s}`, `volume.min.y = ${offset - 10 * s}`,
+    `volume.max.x = ${offset + 11 * s}`, `volume.max.y = ${offset + 10 * s}`, ''].join('\n'));
+  const html = out('far.html');
+  const view = run(['view', out('far.cfg'), '--html', html]);
+  assert.equal(view.status, 0, view.stderr);
+  const { page, errors } = await openViewer(browser, html);
+  try {
+    assert.deepEqual(errors, []);
+    const drawn = await page.evaluate(() => Array.from({ length: 16 }, (_, i) => adsdViewer.environmentVertex(i)));
+    // The reader numbers vertices as the faces first use them: each drawn one is matched with the
+    // nearest of the file's.
+    drawn.forEach((d, i) => {
+      const off = Math.min(...walls.flat().map((v) => Math.hypot(...v.map((x, k) => x - d[k]))));
+      assert.ok(off <= 1e-6, `environment vertex ${i} drawn ${off} from the nearest the file has`);
+    });
+  } finally {
+    await page.close();
+  }
 });
 
 test('adsd view without a path shows the start and the goal', async () => {
