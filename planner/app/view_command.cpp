@@ -339,11 +339,26 @@ int view(const std::vector<std::string>& args) {
                                       std::to_string(kMaxMeasuredStates) + " states or the path's own"
                                 : std::string(" at the validity-checking resolution");
   std::printf("clearance   min %.6g (over %zu states%s)\n", s.minClearance, s.states, over.c_str());
-  if (path) {  // as `adsd plan` prints it: between the states too
-    const PathLeastClearance along = leastClearanceAlong(*path, *problem.checker());
+  std::optional<PathLeastClearance> along;
+  if (path) along = leastClearanceAlong(*path, *problem.checker());  // as `adsd plan` measures it
+  if (along) {
     std::printf("along       min %.6g between the states too (no state of the motions nearer than %.6g; %zu "
                 "clearance queries)\n",
-                along.least, along.lowerBound, along.queries);
+                along->least, along->lowerBound, along->queries);
+    // The verdict `adsd plan` gives its own path, said (the exit status stays 0: the page shows
+    // the path, whatever it touches): the page's clearances are those of the states, and a path
+    // past a thin wall showed 0.01 there with nothing said of the wall it steps through (an
+    // adversarial review).
+    const double margin = problem.checker()->safetyMargin();
+    if (along->least <= margin) {
+      std::printf("contact     the path comes within the safety margin (%g) along its motions (the page shows "
+                  "the clearance at its states)\n",
+                  margin);
+    } else if (along->lowerBound <= margin) {
+      std::printf("unproven    no state found within the safety margin (%g), but %zu clearance queries did not "
+                  "prove every state between the measured ones beyond it\n",
+                  margin, along->queries);
+    }
   }
   std::printf("viewer      %s (%.0f kB)\n", a->html.c_str(), static_cast<double>(s.bytes) / 1000.0);
   return 0;

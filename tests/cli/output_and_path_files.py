@@ -214,10 +214,18 @@ def main():
         # (its states at the resolution are clear), and the `along` line, which measures between
         # them too, finds it at 0: a contact line and exit 1. Certified motions go round.
         thin = os.path.join(os.path.dirname(os.path.abspath(office)), "thin_wall.cfg")
-        r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect"], work)
+        thin_path = os.path.join(work, "thin.path")
+        r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect", "--path", thin_path], work)
         check(r.returncode == 1 and "\nalong       min 0 between the states" in r.stdout
               and "\ncontact     " in r.stdout,
               f"plan thin_wall.cfg, discrete: exit {r.returncode}, stdout {r.stdout!r}")
+        # `adsd view` of that path gives the same verdict: its page shows the states' clearances
+        # (0.01 here), and nothing said the path steps through the wall (an adversarial review).
+        r = run(adsd, ["view", thin, "--path", thin_path, "--html", os.path.join(work, "thin.html")], work)
+        check(r.returncode == 0 and "\nalong       min 0 between the states" in r.stdout
+              and "\ncontact     the path comes within the safety margin (0) along its motions" in r.stdout
+              and os.path.exists(os.path.join(work, "thin.html")),
+              f"view thin_wall.cfg --path: exit {r.returncode}, stdout {r.stdout!r}")
         r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect", "--motion", "certified"],
                 work)
         check(r.returncode == 0 and "\nalong       min 0." in r.stdout and "contact" not in r.stdout,
