@@ -85,8 +85,20 @@ test('a scene far from the origin is drawn where it is', async () => {
       const off = Math.min(...walls.flat().map((v) => Math.hypot(...v.map((x, k) => x - d[k]))));
       assert.ok(off <= 1e-6, `environment vertex ${i} drawn ${off} from the nearest the file has`);
     });
+    // The ghost the robot stands on is hidden, the other shown.
+    assert.deepEqual(await page.evaluate(() => adsdViewer.ghostsShown()), [false, true]);
   } finally {
     await page.close();
+  }
+  // A path of one state, at neither end: both ghosts were hidden, as if it stood on both.
+  fs.writeFileSync(out('far_one.path'), `${offset + 2 * s} ${offset} 0\n`);
+  const one = run(['view', out('far.cfg'), '--path', out('far_one.path'), '--html', out('far_one.html')]);
+  assert.equal(one.status, 0, one.stderr);
+  const opened = await openViewer(browser, out('far_one.html'));
+  try {
+    assert.deepEqual(await opened.page.evaluate(() => adsdViewer.ghostsShown()), [true, true]);
+  } finally {
+    await opened.page.close();
   }
 });
 
