@@ -172,6 +172,23 @@ ViewerSummary writeArmViewerHtml(const std::string& file, const planner::ArmPlan
     space.toJoints(s, shown.joints.data());
     shown.bodyPoses = bodyPoses(checker, shown.joints, linkPoses);
     shown.clearance = checker.clearance(s);
+    // A link wholly inside a primitive (a solid: clearance 0) meets none of its surfaces: its
+    // first vertex inside is what the page marks, if no pair of surfaces touches.
+    if (shown.clearance <= 0.0) {
+      const double slack = kWitnessSlackPerScale * checker.scale();
+      for (std::size_t b = 0; b < links && !shown.inside; ++b) {
+        for (const planner::ConvexSolid& solid : checker.scene().solids) {
+          for (const Vec3& v : checker.bodyMesh(b).vertices()) {
+            const Vec3 p = shown.bodyPoses[b] * v;
+            if (!solid.containsStrictly(p, slack)) continue;
+            shown.inside = ClosestPoints{static_cast<int>(b), ClosestPoints::kEnvironment, p, p,
+                                         planner::nameBeforeSplit(solid.name)};
+            break;
+          }
+          if (shown.inside) break;
+        }
+      }
+    }
     for (std::size_t b = 0; b < links; ++b) {
       for (std::size_t e = 0; e < checker.scene().environment.size(); ++e) {
         pairs.push_back({&checker.bodyMesh(b), shown.bodyPoses[b], &checker.bodyMesh(links + e), Pose::Identity(),

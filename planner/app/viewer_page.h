@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct ViewerState {
   double clearance = 0.0;       ///< the checker's clearance (metres, or the problem's length unit)
   ClosestPoints closest;
   std::vector<double> joints;   ///< an arm's joint vector (ViewerPage::jointNames' order); else empty
+  /// A body point inside a solid obstacle, where no surfaces meet (an arm's link wholly inside a
+  /// primitive: clearance 0): shown when no mesh pair realizes the clearance. Set by describe.
+  std::optional<ClosestPoints> inside;
 };
 
 /// \brief Everything a page shows.

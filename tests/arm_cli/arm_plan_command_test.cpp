@@ -776,6 +776,53 @@ TEST(ArmViewCommand, PageWithNothingToShowIsRefusedBeforePlanning) {
   }
 }
 
+// A link wholly inside a primitive (a solid, clearance 0) meets none of its surfaces: the page
+// paired the clearance 0 with another link's nearest surface, 0.02 away ("upper and block"; an
+// adversarial review). It now marks a point of the link inside the block, as both witnesses.
+TEST(ArmViewCommand, ALinkWhollyInsideAPrimitiveIsMarkedInsideIt) {
+  const fs::path dir = workDirectory();
+  std::ofstream(dir / "bot.urdf")
+      << "<robot name='bot'>\n"
+         "  <link name='base'><collision><origin xyz='0 0 0.05'/><geometry><box size='0.2 0.2 0.1'/></geometry>"
+         "</collision></link>\n"
+         "  <link name='upper'><collision><origin xyz='0 0 0.25'/><geometry><box size='0.1 0.1 0.5'/></geometry>"
+         "</collision></link>\n"
+         "  <link name='fore'><collision><origin xyz='0 0 0.2'/><geometry><box size='0.08 0.08 0.4'/></geometry>"
+         "</collision></link>\n"
+         "  <joint name='j1' type='revolute'><parent link='base'/><child link='upper'/><origin xyz='0 0 0.15'/>"
+         "<axis xyz='0 0 1'/><limit lower='-3' upper='3' effort='1' velocity='1'/></joint>\n"
+         "  <joint name='j2' type='revolute'><parent link='upper'/><child link='fore'/><origin xyz='0 0 0.55'/>"
+         "<axis xyz='0 1 0'/><limit lower='-2' upper='2' effort='1' velocity='1'/></joint>\n"
+         "</robot>\n";
+  writeRequest(dir, "j1, j2", "0, 0", {{"j1", "2.5"}, {"j2", "-1"}});
+  std::ofstream(dir / "scene.yaml")
+      << "name: inside\nworld:\n  collision_objects:\n    - id: block\n      header: {frame_id: world}\n"
+         "      pose: {position: {x: 0, y: 0, z: 0.92}, orientation: {x: 0, y: 0, z: 0, w: 1}}\n"
+         "      primitives: [{type: box, dimensions: [0.6, 0.6, 0.5]}]\n"
+         "      primitive_poses: [{position: {x: 0, y: 0, z: 0}, orientation: {x: 0, y: 0, z: 0, w: 1}}]\n";
+  std::ofstream(dir / "problem.cfg") << "[problem]\nname = inside\nrobot = bot.urdf\nscene = scene.yaml\n"
+                                        "request = request.yaml\n";
+  const fs::path html = dir / "inside.html";
+  const PlanRun v = runAdsd("view", {(dir / "problem.cfg").string(), "--html", html.string()}, dir);
+  EXPECT_EQ(v.status, 0) << v.err;
+  EXPECT_NE(v.err.find("link 'fore' inside obstacle 'block'"), std::string::npos) << v.err;
+  const std::string page = readAll(html.string());
+  // The start's closest pair: the link 'fore' (body 2) and the block, at one point.
+  EXPECT_NE(page.find("\"closest\":[[2,-1,\"block\"]"), std::string::npos);
+  const std::string key = "\"witnesses\":[[";
+  const std::size_t w = page.find(key);
+  ASSERT_NE(w, std::string::npos);
+  const std::size_t from = w + key.size();
+  std::istringstream numbers(page.substr(from, page.find(']', from) - from));
+  std::vector<double> witness;
+  for (std::string x; std::getline(numbers, x, ',');) witness.push_back(std::stod(x));
+  ASSERT_EQ(witness.size(), 6u);
+  EXPECT_EQ(witness[0], witness[3]);
+  EXPECT_EQ(witness[1], witness[4]);
+  EXPECT_EQ(witness[2], witness[5]);
+  EXPECT_GT(witness[2], 0.67);  // inside the block, which starts at z 0.67
+}
+
 // A joint whose limits are equal (locked) stands at them: it is no coordinate (OMPL cannot plan
 // over a range of zero width, and stopped with an internal error), the start and goal may name it
 // where it stands, and a goal elsewhere is refused naming its line.
