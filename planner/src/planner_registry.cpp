@@ -8,10 +8,6 @@
 #include <functional>
 #include <map>
 
-#include <ompl/util/Console.h>
-
-#include "adsd/error.h"
-
 #include <ompl/geometric/planners/AnytimePathShortening.h>
 #include <ompl/geometric/planners/cforest/CForest.h>
 #include <ompl/geometric/planners/est/BiEST.h>
@@ -41,6 +37,9 @@
 #include <ompl/geometric/planners/sbl/SBL.h>
 #include <ompl/geometric/planners/sst/SST.h>
 #include <ompl/geometric/planners/stride/STRIDE.h>
+#include <ompl/util/Console.h>
+
+#include "adsd/error.h"
 
 namespace adsd::planner {
 
@@ -247,11 +246,14 @@ std::vector<std::string> configurePlanner(ompl::base::Planner& planner, const st
     if (!accepted) throw InputError(s->location.describe() + ": " + name + " rejected the value '" + s->value + "'");
   }
   const auto reads = [&](const std::string& key, std::string& value) { return params.getParam(key, value); };
-  for (const Setting* s : order) {
+  for (auto s = order.begin(); s != order.end(); ++s) {
+    // A later line for the same key overrides this one.
+    const std::string& key = (*s)->key;
+    if (std::any_of(s + 1, order.end(), [&](const Setting* later) { return later->key == key; })) continue;
     std::string now;
-    const std::optional<std::string> wanted = switchValue(s->value);
-    if (isPlannerSwitch(s->key) && wanted && reads(s->key, now) && now != *wanted) {
-      throw InputError(s->location.describe() + ": " + name + " did not keep the value '" + s->value +
+    const std::optional<std::string> wanted = switchValue((*s)->value);
+    if (isPlannerSwitch(key) && wanted && reads(key, now) && now != *wanted) {
+      throw InputError((*s)->location.describe() + ": " + name + " did not keep the value '" + (*s)->value +
                        "' (it reads " + now + " once all its parameters are set)");
     }
   }

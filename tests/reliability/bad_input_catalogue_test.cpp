@@ -196,6 +196,8 @@ TEST(BadInputCatalogue, OrderedSamplingWithoutInformedOrRejectionSamplingNamesTh
             "or rejection sampling, and neither is on (set informed_sampling = 1 or sample_rejection = 1)");
   EXPECT_EQ(configureError("rrtstar", "rrtstar.ordered_sampling = 1\nrrtstar.informed_sampling = 1\n"), "");
   EXPECT_EQ(configureError("rrtstar", "rrtstar.sample_rejection = true\nrrtstar.ordered_sampling = true\n"), "");
+  // A later line for a switch overrides an earlier one: only the last is held to what OMPL keeps.
+  EXPECT_EQ(configureError("rrtstar", "rrtstar.informed_sampling = 1\nrrtstar.informed_sampling = 0\n"), "");
   // InformedRRT* samples the informed set always (it declares no switch for it).
   EXPECT_EQ(configureError("informedrrtstar", "informedrrtstar.ordered_sampling = 1\n"), "");
 }
