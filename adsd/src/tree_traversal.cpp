@@ -342,10 +342,11 @@ void Query::traverseTrees() {
   // go deeper first: two sheets overlapping in one plane tie everywhere, and by the estimate
   // alone were opened across the whole sheet before a first pair of leaves showed the distance 0
   // (an outside review, sheets of 80 000 and 65 000 triangles: 53 443 node pairs, 16 ms; adsd
-  // distance --path tree on them: 11.6 ms before, 0.043 ms now). Meshes that cross have the same ties: exact
-  // queries of a cow, a bunny and a camel crossing a copy of itself took 0.39-0.41 of the time
-  // (adsd distance --path tree, 40 poses). Near contact the node pairs changed by at most 3 %
-  // (bench_bands --counters, touching, near and mid bands of three mesh pairs and three problems).
+  // distance --path tree on them: 11.6 ms before, 0.043 ms now). Meshes that cross have the same
+  // ties: exact queries of a cow, a bunny and a camel crossing a copy of itself took 0.39-0.41 of
+  // the time (adsd distance --path tree, 40 poses). Near contact the node pairs changed by at most
+  // 3 % (bench_bands --counters, touching, near and mid bands of three mesh pairs and three
+  // problems).
   auto takenBefore = [lowersUpperBound](const Pending& x, const Pending& y) {
     if (!lowersUpperBound) return x.nearness < y.nearness;
     if (x.lower != y.lower) return x.lower < y.lower;

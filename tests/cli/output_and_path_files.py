@@ -215,7 +215,8 @@ def main():
         # them too, finds it at 0: a contact line and exit 1. Certified motions go round.
         thin = os.path.join(os.path.dirname(os.path.abspath(office)), "thin_wall.cfg")
         thin_path = os.path.join(work, "thin.path")
-        r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect", "--path", thin_path], work)
+        r = run(adsd, ["plan", thin, "--seed", "1", "--time", "5", "--planner", "rrtconnect", "--path", thin_path],
+                work)
         check(r.returncode == 1 and "\nalong       min 0 between the states" in r.stdout
               and "\ncontact     " in r.stdout,
               f"plan thin_wall.cfg, discrete: exit {r.returncode}, stdout {r.stdout!r}")
