@@ -4,22 +4,16 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <string_view>
 
 #include "adsd/error.h"
+#include "adsd/io/text_encoding.h"
 
 namespace adsd::planner {
 
 void requireNarrowText(const std::string& text, const std::string& sourceName) {
   if (text.find('\0') == std::string::npos) return;
-  const auto startsWith = [&](std::string_view mark) { return std::string_view(text).substr(0, mark.size()) == mark; };
-  // UTF-32LE's mark begins with UTF-16LE's, so it is asked first.
-  const char* encoding = startsWith(std::string_view("\xFF\xFE\0\0", 4))   ? "UTF-32LE"
-                         : startsWith(std::string_view("\0\0\xFE\xFF", 4)) ? "UTF-32BE"
-                         : startsWith("\xFF\xFE")                         ? "UTF-16LE"
-                         : startsWith("\xFE\xFF")                         ? "UTF-16BE"
-                                                                          : nullptr;
-  if (encoding != nullptr) {
+  const std::string encoding = io::wideTextEncoding(text);
+  if (!encoding.empty()) {
     throw InputError(sourceName + ": the file is " + encoding + " text; save it as UTF-8 (iconv -f " + encoding +
                      " -t UTF-8)");
   }

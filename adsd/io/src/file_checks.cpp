@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "adsd/error.h"
+#include "adsd/io/text_encoding.h"
 #include "text_scan.h"
 
 namespace adsd::io::detail {
@@ -130,16 +131,6 @@ std::string lowerCaseExtension(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
-}
-
-std::string wideTextEncoding(std::string_view bytes) {
-  const auto startsWith = [&](std::string_view mark) { return bytes.substr(0, mark.size()) == mark; };
-  // UTF-32LE's mark begins with UTF-16LE's, so it is asked first.
-  if (startsWith(std::string_view("\xFF\xFE\0\0", 4))) return "UTF-32LE";
-  if (startsWith(std::string_view("\0\0\xFE\xFF", 4))) return "UTF-32BE";
-  if (startsWith("\xFF\xFE")) return "UTF-16LE";
-  if (startsWith("\xFE\xFF")) return "UTF-16BE";
-  return {};
 }
 
 void requireNarrowText(const std::string& path, std::string_view bytes, MeshReader reader) {

@@ -29,11 +29,6 @@ bool isBinaryStl(std::string_view head);
 /// header promises (a cut-off download or copy is the usual cause, and the message says so).
 void requireCompleteBinaryStl(const std::string& path, std::string_view head, std::uintmax_t sizeInBytes);
 
-/// \brief The encoding a byte-order mark at the start of \p bytes names when it is a wide one
-/// ("UTF-16LE", "UTF-16BE", "UTF-32LE", "UTF-32BE"), else empty: text the readers take for ASCII
-/// or UTF-8 reads as NUL bytes between the characters, in which no keyword is found.
-std::string wideTextEncoding(std::string_view bytes);
-
 /// \brief The extension of \p path in lower case, with its dot (".obj"); empty if it has none.
 std::string lowerCaseExtension(const std::string& path);
 

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "adsd/error.h"
-#include "file_checks.h"
+#include "adsd/io/text_encoding.h"
 #include "text_scan.h"
 
 namespace adsd::io {
@@ -99,7 +99,7 @@ std::vector<PosePair> readPoseFile(std::istream& in, const std::string& sourceNa
     }
     // A wide encoding's mark (Windows Notepad may save UTF-16): its first number was quoted as
     // '??0?', not a number, leaving the user to guess why.
-    if (const std::string encoding = lineNumber == 1 ? detail::wideTextEncoding(content) : std::string();
+    if (const std::string encoding = lineNumber == 1 ? wideTextEncoding(content) : std::string();
         !encoding.empty()) {
       throw InputError(sourceName + ": the file is " + encoding + " text; save it as UTF-8 (iconv -f " + encoding +
                        " -t UTF-8)");
